@@ -1,0 +1,50 @@
+#include "app/commands.h"
+#include "app/viewed_file.h"
+#include "core/camera.h"
+#include "core/error.h"
+#include "gl/egl_context.h"
+#include "gl/mesh_renderer.h"
+
+#include <cstdio>
+#include <regex>
+
+namespace radview {
+
+void parseSize(const std::string& text, int& width, int& height) {
+  std::smatch m;
+  static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+  if (!std::regex_match(text, m, pattern)) throw Error("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1024x768");
+  width = std::stoi(m[1]);
+  height = std::stoi(m[2]);
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw Error("--size '" + text + "': each side must be within 1..16384");
+}
+
+void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
+                    const std::string& out) {
+  gl::RenderSettings settings;
+  settings.method = gl::shadingMethodFromName(display.method);
+  settings.perspectiveCorrect = !display.screenSpace;
+  settings.exposure = display.exposure;
+  settings.elementEdges = display.edges;
+  const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
+
+  gl::EglContext context;
+  gl::MeshRenderer renderer;
+  renderer.setMesh(viewed.mesh);
+  renderer.render(camera, settings, width, height);
+  writePng(renderer.readDisplay(), out);
+  std::printf("%s\n", out.c_str());
+}
+
+int runRender(const RenderOptions& options) {
+  int width = 0, height = 0;
+  parseSize(options.size, width, height);
+  gl::shadingMethodFromName(options.display.method);  // a bad name fails before the file is read
+  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
+  for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
+  renderHeadless(viewed, options.display, width, height, options.out);
+  return 0;
+}
+
+}  // namespace radview

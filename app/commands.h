@@ -1,0 +1,51 @@
+#pragma once
+// The subcommands, each a plain options struct filled by CLI11 in main.cpp and a run
+// function that returns the exit status. Errors are thrown as radview::Error.
+#include <string>
+
+namespace radview {
+
+struct DisplayOptions {
+  std::string method = "gouraud";
+  bool screenSpace = false;  // Gouraud interpolated linearly in screen space
+  double exposure = 0.0;     // stops
+  std::string camera;        // preset or eye/target/up; empty: the file's camera, else front
+  bool edges = false;
+  double elementSize = 0.0;  // scenes only; 0 picks a default
+};
+
+struct RenderOptions {
+  std::string file;
+  std::string out = "radview.png";
+  std::string size = "1024x768";
+  DisplayOptions display;
+};
+
+struct InfoOptions {
+  std::string file;
+  double elementSize = 0.0;
+};
+
+struct ViewerOptions {
+  std::string file;  // empty: the bundled Cornell box
+  int frames = 0;    // > 0: run that many frames, then exit
+  std::string screenshot;
+  std::string size = "1280x800";
+  DisplayOptions display;
+};
+
+int runRender(const RenderOptions& options);
+int runInfo(const InfoOptions& options);
+// Opens the window; where no display exists, renders headless to a PNG instead (unless a
+// window was explicitly asked for with --frames/--screenshot) and prints its path.
+int runViewer(const ViewerOptions& options);
+
+struct ViewedFile;
+// Renders through EGL to a PNG at `out` and prints its path.
+void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
+                    const std::string& out);
+
+// "1024x768" -> width, height. Throws Error.
+void parseSize(const std::string& text, int& width, int& height);
+
+}  // namespace radview

@@ -1,0 +1,229 @@
+#include "app/commands.h"
+#include "app/viewer_panel.h"
+#include "core/error.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+namespace radview {
+
+namespace {
+
+std::string glfwFailure;
+
+struct Input {
+  ViewerState* state = nullptr;
+  std::string droppedPath;
+  double lastX = 0.0, lastY = 0.0;
+  bool dragging = false;
+};
+
+void onKey(GLFWwindow* window, int key, int, int action, int) {
+  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  ViewerState& s = *static_cast<Input*>(glfwGetWindowUserPointer(window))->state;
+  switch (key) {
+    case GLFW_KEY_1: s.settings.method = gl::ShadingMethod::Flat; break;
+    case GLFW_KEY_2: s.settings.method = gl::ShadingMethod::Gouraud; break;
+    case GLFW_KEY_P: s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect; break;
+    case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
+    case GLFW_KEY_R: rotateView45(s); break;
+    case GLFW_KEY_F: resetCamera(s); break;
+    case GLFW_KEY_S: s.screenshotRequested = true; break;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: s.settings.exposure += 0.5; break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: s.settings.exposure -= 0.5; break;
+    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
+    default: break;
+  }
+}
+
+void onScroll(GLFWwindow* window, double, double dy) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
+  zoom(static_cast<Input*>(glfwGetWindowUserPointer(window))->state->camera, std::pow(0.9, dy));
+}
+
+void onDrop(GLFWwindow* window, int count, const char** paths) {
+  if (count > 0) static_cast<Input*>(glfwGetWindowUserPointer(window))->droppedPath = paths[0];
+}
+
+// Mouse drags: left orbits, right or middle pans.
+void handleDrag(GLFWwindow* window, Input& input) {
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                     glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+  if (!left && !right) {
+    input.dragging = false;
+  } else if (!input.dragging) {
+    input.dragging = !ImGui::GetIO().WantCaptureMouse;
+  } else {
+    int width = 1, height = 1;
+    glfwGetWindowSize(window, &width, &height);
+    const double dx = (x - input.lastX) / height, dy = (y - input.lastY) / height;
+    if (left) orbit(input.state->camera, dx * 3.0, dy * 3.0);
+    else pan(input.state->camera, dx, dy);
+  }
+  input.lastX = x;
+  input.lastY = y;
+}
+
+void show(ViewerState& state, ViewedFile viewed) {
+  state.viewed = std::move(viewed);
+  const std::string& path = state.viewed.file.path;
+  state.homeCamera = cameraFromSpec("", state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
+  state.camera = state.homeCamera;
+  state.rollSteps = 0;
+  state.pathToOpen = path;
+  state.status = "opened " + path;
+  for (const std::string& w : state.viewed.file.warnings) state.status += "\nwarning: " + w;
+}
+
+std::string nextScreenshotName() {
+  for (int i = 1;; ++i) {
+    const std::string name = "radview-screenshot-" + std::to_string(i) + ".png";
+    if (!std::filesystem::exists(name)) return name;
+  }
+}
+
+// Where no display exists, the viewer's job becomes a headless render of the same file.
+int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
+  const std::string out =
+      std::filesystem::absolute("radview-" + std::filesystem::path(viewed.file.path).stem().string() + ".png");
+  std::fprintf(stderr, "radview: no display (%s); rendering headless instead\n", glfwFailure.c_str());
+  int width = 0, height = 0;
+  parseSize(options.size, width, height);
+  renderHeadless(viewed, options.display, width, height, out);
+  return 0;
+}
+
+}  // namespace
+
+int runViewer(const ViewerOptions& options) {
+  int width = 0, height = 0;
+  parseSize(options.size, width, height);
+  if (options.frames < 0) throw Error("--frames must be positive");
+  if (!options.screenshot.empty() && options.frames == 0)
+    throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
+
+  gl::shadingMethodFromName(options.display.method);
+  ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
+
+  glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
+  if (!glfwInit()) {
+    if (options.frames > 0) throw Error("cannot open a window: " + glfwFailure);
+    return renderInstead(options, viewed);
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  GLFWwindow* window = glfwCreateWindow(width, height, "radview", nullptr, nullptr);
+  if (!window) {
+    const std::string why = glfwFailure;
+    glfwTerminate();
+    throw Error("cannot open an OpenGL 4.5 core window: " + why);
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  int status = 0;
+  {
+    ViewerState state;
+    state.settings.method = gl::shadingMethodFromName(options.display.method);
+    state.settings.perspectiveCorrect = !options.display.screenSpace;
+    state.settings.exposure = options.display.exposure;
+    state.settings.elementEdges = options.display.edges;
+    show(state, std::move(viewed));
+    if (!options.display.camera.empty())
+      state.camera = state.homeCamera =
+          cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
+
+    Input input;
+    input.state = &state;
+    glfwSetWindowUserPointer(window, &input);
+    // Installed before ImGui's, which chains to them.
+    glfwSetKeyCallback(window, onKey);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetDropCallback(window, onDrop);
+
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+
+    gl::MeshRenderer renderer;
+    renderer.setMesh(state.viewed.mesh);
+
+    for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+      const auto start = std::chrono::steady_clock::now();
+      glfwPollEvents();
+      handleDrag(window, input);
+      if (!input.droppedPath.empty() || state.openRequested) {
+        const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
+        input.droppedPath.clear();
+        state.openRequested = false;
+        try {
+          show(state, openForViewing(path, options.display.elementSize));
+          renderer.setMesh(state.viewed.mesh);
+        } catch (const Error& e) {
+          state.status = e.what();  // keep showing the previous file
+        }
+      }
+      int fbWidth = 0, fbHeight = 0;
+      glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+      if (fbWidth > 0 && fbHeight > 0) {
+        fitClipPlanes(state.camera, state.viewed.mesh.bounds());
+        renderer.render(state.camera, state.settings, fbWidth, fbHeight);
+        renderer.presentToDefaultFramebuffer(fbWidth, fbHeight);
+        state.gpuFrameMs = renderer.gpuFrameMs();
+        state.triangles = renderer.triangleCount();
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      drawPanel(state);
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+      const bool lastFrame = options.frames > 0 && frame >= options.frames;
+      if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
+        const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : nextScreenshotName();
+        try {
+          writePng(gl::readDefaultFramebuffer(fbWidth, fbHeight), path);
+          state.status = "screenshot written to " + path;
+          if (lastFrame) std::printf("%s\n", path.c_str());
+        } catch (const Error& e) {
+          state.status = e.what();
+          if (lastFrame) status = 1, std::fprintf(stderr, "radview: %s\n", e.what());
+        }
+        state.screenshotRequested = false;
+      }
+      glfwSwapBuffers(window);
+      state.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      if (lastFrame) break;
+    }
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return status;
+}
+
+}  // namespace radview

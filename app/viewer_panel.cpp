@@ -1,0 +1,90 @@
+#include "app/viewer_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace radview {
+
+void rotateView45(ViewerState& state) {
+  roll(state.camera, glm::radians(45.0));
+  state.rollSteps = (state.rollSteps + 1) % 8;
+}
+
+void resetCamera(ViewerState& state) {
+  state.camera = state.homeCamera;
+  state.rollSteps = 0;
+}
+
+const char* shortcutHelp() {
+  return "Viewer keys: 1 flat, 2 Gouraud, P perspective-correct / screen-space, E element edges,\n"
+         "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
+         "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
+         "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
+}
+
+namespace {
+
+// ImGui 1.86 has no SeparatorText.
+void section(const char* title) {
+  ImGui::Spacing();
+  ImGui::Separator();
+  ImGui::TextDisabled("%s", title);
+}
+
+}  // namespace
+
+void drawPanel(ViewerState& state) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("radview");
+
+  const ViewedFile& viewed = state.viewed;
+  ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
+  ImGui::Text("%s: %zu nodes, %zu elements", viewed.file.isSolution ? "solution" : "scene (direct light)",
+              viewed.mesh.nodes.size(), viewed.mesh.elements.size());
+  ImGui::Text("T-vertices: %zu", viewed.tVertexCount);
+
+  section("Interpolant (C&W 9.2)");
+  int method = static_cast<int>(state.settings.method);
+  ImGui::RadioButton("Flat [1]", &method, static_cast<int>(gl::ShadingMethod::Flat));
+  ImGui::SameLine();
+  ImGui::RadioButton("Gouraud [2]", &method, static_cast<int>(gl::ShadingMethod::Gouraud));
+  state.settings.method = static_cast<gl::ShadingMethod>(method);
+  ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Off: interpolate linearly in screen space, as classic Gouraud hardware did (9.2, note 3)");
+
+  section("Display");
+  float exposure = static_cast<float>(state.settings.exposure);
+  ImGui::PushItemWidth(200);
+  if (ImGui::SliderFloat("Exposure, stops", &exposure, -10.0f, 10.0f, "%.1f")) state.settings.exposure = exposure;
+  ImGui::PopItemWidth();
+  ImGui::Checkbox("Element edges [E]", &state.settings.elementEdges);
+
+  section("View");
+  if (ImGui::Button("Rotate 45 deg [R]")) rotateView45(state);
+  ImGui::SameLine();
+  ImGui::Text("%d x 45 deg", state.rollSteps);
+  if (ImGui::Button("Reset camera [F]")) resetCamera(state);
+  ImGui::SameLine();
+  if (ImGui::Button("Screenshot [S]")) state.screenshotRequested = true;
+
+  section("Open");
+  char buffer[1024];
+  std::snprintf(buffer, sizeof buffer, "%s", state.pathToOpen.c_str());
+  if (ImGui::InputText("##path", buffer, sizeof buffer)) state.pathToOpen = buffer;
+  ImGui::SameLine();
+  if (ImGui::Button("Open")) state.openRequested = true;
+  ImGui::TextDisabled("or drop a .gltf / .glb on the window");
+
+  section("Frame");
+  ImGui::Text("GPU %.2f ms   CPU %.2f ms", state.gpuFrameMs, state.cpuFrameMs);
+  ImGui::Text("%zu triangles", state.triangles);
+  if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
+  if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(shortcutHelp());
+  ImGui::End();
+}
+
+}  // namespace radview

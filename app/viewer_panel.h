@@ -1,0 +1,34 @@
+#pragma once
+// The viewer's state and its ImGui panel. ImGui lives only in app/.
+#include "app/viewed_file.h"
+#include "core/camera.h"
+#include "gl/mesh_renderer.h"
+
+#include <string>
+
+namespace radview {
+
+struct ViewerState {
+  ViewedFile viewed;
+  Camera camera;
+  Camera homeCamera;  // the camera the file opened with ('F' returns to it)
+  gl::RenderSettings settings;
+  std::string status;        // last message: file opened, screenshot written, error
+  std::string pathToOpen;    // panel's "open" field
+  bool openRequested = false;
+  bool screenshotRequested = false;
+  int rollSteps = 0;         // 45-degree view rotations applied (fig. 9.8)
+  double cpuFrameMs = 0.0;
+  double gpuFrameMs = 0.0;
+  size_t triangles = 0;
+};
+
+void rotateView45(ViewerState& state);
+void resetCamera(ViewerState& state);
+
+// Keyboard shortcuts, as listed in the panel and in --help.
+const char* shortcutHelp();
+
+void drawPanel(ViewerState& state);
+
+}  // namespace radview

@@ -1,0 +1,134 @@
+#include "core/camera.h"
+
+#include "core/error.h"
+#include "scene/scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtx/rotate_vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace radview {
+
+glm::dmat4 Camera::viewFromWorld() const { return glm::lookAt(eye, target, up); }
+
+glm::dmat4 Camera::clipFromView(double aspect) const { return glm::perspective(yfov, aspect, zNear, zFar); }
+
+void fitClipPlanes(Camera& camera, const Bounds& bounds) {
+  const double radius = std::max(0.5 * bounds.diagonal(), 1e-6);
+  const double distance = glm::length(bounds.center() - camera.eye);
+  camera.zFar = distance + radius * 1.01;
+  camera.zNear = std::max(distance - radius * 1.01, camera.zFar * 1e-4);
+}
+
+std::vector<std::string> cameraPresetNames() { return {"file", "front", "back", "left", "right", "top", "bottom", "iso"}; }
+
+namespace {
+
+// A camera looking at the bounds' centre from `direction`, far enough for the bounding sphere
+// to fill the vertical field of view.
+Camera looking(const Bounds& bounds, Vec3 direction, Vec3 up) {
+  Camera c;
+  c.yfov = glm::radians(40.0);
+  const double radius = std::max(0.5 * bounds.diagonal(), 1e-6);
+  const double distance = radius / std::sin(0.5 * c.yfov);
+  c.target = bounds.center();
+  c.eye = c.target - glm::normalize(direction) * distance;
+  c.up = up;
+  return c;
+}
+
+bool parseVec3(const std::string& text, Vec3& out) {
+  std::istringstream is(text);
+  char comma1 = 0, comma2 = 0;
+  if (!(is >> out.x >> comma1 >> out.y >> comma2 >> out.z) || comma1 != ',' || comma2 != ',') return false;
+  is >> std::ws;
+  return is.eof() && std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+}
+
+Camera fromEyeTargetUp(const std::string& spec) {
+  std::vector<std::string> parts;
+  std::stringstream ss(spec);
+  for (std::string part; std::getline(ss, part, '/');) parts.push_back(part);
+  Camera c;
+  if ((parts.size() != 2 && parts.size() != 3) || !parseVec3(parts[0], c.eye) || !parseVec3(parts[1], c.target) ||
+      (parts.size() == 3 && !parseVec3(parts[2], c.up)))
+    throw Error("--camera '" + spec + "': expected a preset or ex,ey,ez/tx,ty,tz[/ux,uy,uz]");
+  if (glm::length(c.target - c.eye) <= 0.0) throw Error("--camera '" + spec + "': eye and target coincide");
+  if (glm::length(glm::cross(c.target - c.eye, c.up)) <= 1e-12 * glm::length(c.target - c.eye) * glm::length(c.up))
+    throw Error("--camera '" + spec + "': up is parallel to the view direction");
+  return c;
+}
+
+}  // namespace
+
+Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::vector<SceneCamera>& fileCameras) {
+  const std::string name = spec.empty() ? (fileCameras.empty() ? "front" : "file") : spec;
+  Camera c;
+  if (name == "file") {
+    if (fileCameras.empty()) throw Error("--camera file: the file has no camera");
+    const SceneCamera& s = fileCameras.front();
+    c.eye = s.eye;
+    c.target = s.target;
+    c.up = s.up;
+    c.yfov = s.yfov;
+  } else if (name == "front") {
+    c = looking(bounds, {0, 0, -1}, {0, 1, 0});
+  } else if (name == "back") {
+    c = looking(bounds, {0, 0, 1}, {0, 1, 0});
+  } else if (name == "left") {
+    c = looking(bounds, {1, 0, 0}, {0, 1, 0});
+  } else if (name == "right") {
+    c = looking(bounds, {-1, 0, 0}, {0, 1, 0});
+  } else if (name == "top") {
+    c = looking(bounds, {0, -1, 0}, {0, 0, -1});
+  } else if (name == "bottom") {
+    c = looking(bounds, {0, 1, 0}, {0, 0, 1});
+  } else if (name == "iso") {
+    c = looking(bounds, {-1, -1, -1}, {0, 1, 0});
+  } else if (name.find('/') != std::string::npos) {
+    c = fromEyeTargetUp(name);
+  } else {
+    std::string names;
+    for (const std::string& n : cameraPresetNames()) names += (names.empty() ? "" : ", ") + n;
+    throw Error("--camera '" + spec + "': unknown preset (use one of " + names + ", or ex,ey,ez/tx,ty,tz[/ux,uy,uz])");
+  }
+  fitClipPlanes(c, bounds);
+  return c;
+}
+
+void orbit(Camera& camera, double yawRadians, double pitchRadians) {
+  Vec3 offset = camera.eye - camera.target;
+  const Vec3 up = glm::normalize(camera.up);
+  offset = glm::rotate(offset, -yawRadians, up);
+  const Vec3 right = glm::normalize(glm::cross(-offset, up));
+  // Keep away from the poles, where the up vector and the view direction would align.
+  const double pitchNow = std::asin(glm::clamp(glm::dot(glm::normalize(offset), up), -1.0, 1.0));
+  const double limit = glm::radians(89.0);
+  const double pitch = glm::clamp(pitchNow + pitchRadians, -limit, limit) - pitchNow;
+  offset = glm::rotate(offset, pitch, right);
+  camera.eye = camera.target + offset;
+}
+
+void pan(Camera& camera, double dxFraction, double dyFraction) {
+  const Vec3 forward = camera.forward();
+  const Vec3 right = glm::normalize(glm::cross(forward, camera.up));
+  const Vec3 up = glm::cross(right, forward);
+  const double height = 2.0 * glm::length(camera.target - camera.eye) * std::tan(0.5 * camera.yfov);
+  const Vec3 shift = (-dxFraction * right + dyFraction * up) * height;
+  camera.eye += shift;
+  camera.target += shift;
+}
+
+void zoom(Camera& camera, double factor) {
+  camera.eye = camera.target + (camera.eye - camera.target) * std::max(factor, 1e-6);
+}
+
+void roll(Camera& camera, double radians) {
+  // Turning the camera counter-clockwise about its view axis turns the image clockwise.
+  camera.up = glm::rotate(camera.up, -radians, camera.forward());
+}
+
+}  // namespace radview

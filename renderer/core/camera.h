@@ -1,0 +1,44 @@
+#pragma once
+// A pinhole camera and the ways a user names one: a preset or "eye/target/up".
+#include "core/types.h"
+
+#include <string>
+#include <vector>
+
+namespace radview {
+
+struct SceneCamera;
+
+struct Camera {
+  Vec3 eye{0.0, 0.0, 1.0};
+  Vec3 target{0.0};
+  Vec3 up{0.0, 1.0, 0.0};
+  double yfov = glm::radians(45.0);  // full vertical field of view
+  double zNear = 0.01, zFar = 100.0;
+
+  glm::dmat4 viewFromWorld() const;
+  glm::dmat4 clipFromView(double aspect) const;
+  glm::dmat4 clipFromWorld(double aspect) const { return clipFromView(aspect) * viewFromWorld(); }
+  Vec3 forward() const { return glm::normalize(target - eye); }
+};
+
+// Sets zNear/zFar to enclose `bounds` as seen from the camera, with a near plane no closer
+// than 1e-4 of the far one (depth precision).
+void fitClipPlanes(Camera& camera, const Bounds& bounds);
+
+// Names accepted by cameraFromSpec, for --help: "file" (the file's first camera), "front",
+// "back", "left", "right", "top", "bottom", "iso".
+std::vector<std::string> cameraPresetNames();
+
+// The camera a user asked for: a preset name, or "ex,ey,ez/tx,ty,tz[/ux,uy,uz]". An empty
+// spec means "file" when the file has a camera, else "front". Throws Error for a bad spec.
+Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::vector<SceneCamera>& fileCameras);
+
+// Orbit / pan / zoom about the target, and roll about the view axis (fig. 9.8 rotates the
+// view in 45-degree steps).
+void orbit(Camera& camera, double yawRadians, double pitchRadians);
+void pan(Camera& camera, double dxFraction, double dyFraction);  // fractions of the view height
+void zoom(Camera& camera, double factor);                        // distance to target *= factor
+void roll(Camera& camera, double radians);                       // clockwise on screen for > 0
+
+}  // namespace radview

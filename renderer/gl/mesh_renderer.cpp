@@ -1,0 +1,182 @@
+#include "gl/mesh_renderer.h"
+
+#include "core/error.h"
+#include "mesh/display_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace radview::gl {
+
+const std::vector<std::string>& shadingMethodNames() {
+  static const std::vector<std::string> names = {"flat", "gouraud"};
+  return names;
+}
+
+ShadingMethod shadingMethodFromName(const std::string& name) {
+  const auto& names = shadingMethodNames();
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<ShadingMethod>(i);
+  throw Error("unknown shading method '" + name + "' (expected flat or gouraud)");
+}
+
+namespace {
+
+// Rows of a bottom-up OpenGL read-back, top row first.
+template <typename T>
+std::vector<T> flipRows(const std::vector<T>& pixels, int width, int height, int channels) {
+  std::vector<T> out(pixels.size());
+  const size_t row = size_t(width) * channels;
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&pixels[size_t(height - 1 - y) * row], row, &out[size_t(y) * row]);
+  return out;
+}
+
+}  // namespace
+
+MeshRenderer::MeshRenderer() {
+  glCreateVertexArrays(1, &meshVao_);
+  glCreateBuffers(1, &meshVbo_);
+  glVertexArrayVertexBuffer(meshVao_, 0, meshVbo_, 0, sizeof(DisplayVertex));
+  const GLuint offsets[] = {offsetof(DisplayVertex, position), offsetof(DisplayVertex, B),
+                            offsetof(DisplayVertex, Bflat)};
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+    glEnableVertexArrayAttrib(meshVao_, attribute);
+    glVertexArrayAttribFormat(meshVao_, attribute, 3, GL_FLOAT, GL_FALSE, offsets[attribute]);
+    glVertexArrayAttribBinding(meshVao_, attribute, 0);
+  }
+  glCreateVertexArrays(1, &edgeVao_);
+  glCreateBuffers(1, &edgeVbo_);
+  glVertexArrayVertexBuffer(edgeVao_, 0, edgeVbo_, 0, sizeof(glm::vec3));
+  glEnableVertexArrayAttrib(edgeVao_, 0);
+  glVertexArrayAttribFormat(edgeVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(edgeVao_, 0, 0);
+  glCreateVertexArrays(1, &emptyVao_);
+  glCreateQueries(GL_TIME_ELAPSED, 2, timerQueries_.data());
+}
+
+MeshRenderer::~MeshRenderer() {
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_};
+  glDeleteVertexArrays(3, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_};
+  glDeleteBuffers(2, buffers);
+  glDeleteQueries(2, timerQueries_.data());
+}
+
+void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
+  const DisplayMesh display = buildDisplayMesh(mesh);
+  // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
+  glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
+                    GL_STATIC_DRAW);
+  glNamedBufferData(edgeVbo_, display.elementEdges.size() * sizeof(glm::vec3), display.elementEdges.data(),
+                    GL_STATIC_DRAW);
+  triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
+  edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+}
+
+void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, int width, int height) {
+  targets_.resize(width, height);
+  const bool timing = frame_ >= 2;
+  if (timing) {
+    GLuint64 ns = 0;
+    GLint ready = 0;
+    glGetQueryObjectiv(timerQueries_[frame_ % 2], GL_QUERY_RESULT_AVAILABLE, &ready);
+    if (ready) {
+      glGetQueryObjectui64v(timerQueries_[frame_ % 2], GL_QUERY_RESULT, &ns);
+      gpuFrameMs_ = ns * 1e-6;
+    }
+  }
+  glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
+  const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height));
+
+  // Pass 1: linear radiosity and depth.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
+  glViewport(0, 0, width, height);
+  const float clearLinear[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(targets_.linearFramebuffer(), GL_COLOR, 0, clearLinear);
+  glClearNamedFramebufferfi(targets_.linearFramebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // radiosity surfaces are seen from both sides in a viewer
+  // Push surfaces back a little so edge overlays drawn at the same depth win.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  meshProgram_.set("clipFromWorld", clipFromWorld);
+  meshProgram_.set("method", static_cast<int>(settings.method));
+  meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
+  meshProgram_.use();
+  glBindVertexArray(meshVao_);
+  glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+
+  // Pass 2: tone map into the display target.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
+  glDisable(GL_DEPTH_TEST);
+  toneMapProgram_.set("exposureScale", static_cast<float>(std::exp2(settings.exposure)));
+  toneMapProgram_.set("background", settings.background);
+  toneMapProgram_.set("linearRadiosity", 0);
+  toneMapProgram_.use();
+  glBindTextureUnit(0, targets_.linearTexture());
+  glBindVertexArray(emptyVao_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  // Pass 3: overlays, depth-tested against the surfaces.
+  if (settings.elementEdges && edgeVertices_ > 0) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    linesProgram_.set("clipFromWorld", clipFromWorld);
+    linesProgram_.set("color", settings.edgeColor);
+    linesProgram_.use();
+    glBindVertexArray(edgeVao_);
+    glDrawArrays(GL_LINES, 0, edgeVertices_);
+    glDepthMask(GL_TRUE);
+  }
+  glEndQuery(GL_TIME_ELAPSED);
+  ++frame_;
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (GLenum error = glGetError(); error != GL_NO_ERROR)
+    throw Error("OpenGL error 0x" + std::to_string(error) + " while rendering");
+}
+
+Image MeshRenderer::readDisplay() const {
+  Image image{targets_.width(), targets_.height(), {}};
+  std::vector<uint8_t> pixels(size_t(image.width) * image.height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glNamedFramebufferReadBuffer(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.displayFramebuffer());
+  glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  image.rgba = flipRows(pixels, image.width, image.height, 4);
+  return image;
+}
+
+LinearImage MeshRenderer::readLinear() const {
+  LinearImage image{targets_.width(), targets_.height(), {}};
+  std::vector<float> pixels(size_t(image.width) * image.height * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.linearFramebuffer());
+  glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  image.rgba = flipRows(pixels, image.width, image.height, 4);
+  return image;
+}
+
+void MeshRenderer::presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const {
+  glBlitNamedFramebuffer(targets_.displayFramebuffer(), 0, 0, 0, targets_.width(), targets_.height(), 0, 0,
+                         framebufferWidth, framebufferHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+Image readDefaultFramebuffer(int width, int height) {
+  Image image{width, height, {}};
+  std::vector<uint8_t> pixels(size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+  image.rgba = flipRows(pixels, width, height, 4);
+  return image;
+}
+
+}  // namespace radview::gl

@@ -1,0 +1,66 @@
+#pragma once
+// Draws a radiosity mesh: flat or Gouraud shading (perspective-correct or screen-space),
+// exposure and sRGB tone mapping, and the element-edge overlay. Needs a current OpenGL 4.5
+// core context (EglContext, or the viewer's window).
+#include "core/camera.h"
+#include "core/image.h"
+#include "gl/render_targets.h"
+#include "gl/shader_program.h"
+#include "mesh/radiosity_mesh.h"
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace radview::gl {
+
+enum class ShadingMethod : int { Flat = 0, Gouraud = 1 };
+const std::vector<std::string>& shadingMethodNames();  // "flat", "gouraud" (by enum value)
+ShadingMethod shadingMethodFromName(const std::string& name);  // throws Error
+
+struct RenderSettings {
+  ShadingMethod method = ShadingMethod::Gouraud;
+  bool perspectiveCorrect = true;  // false: interpolate linearly in screen space
+  double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
+  bool elementEdges = false;
+  glm::vec3 background{0.08f, 0.08f, 0.09f};
+  glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+class MeshRenderer {
+ public:
+  MeshRenderer();
+  ~MeshRenderer();
+  MeshRenderer(const MeshRenderer&) = delete;
+  MeshRenderer& operator=(const MeshRenderer&) = delete;
+
+  void setMesh(const RadiosityMesh& mesh);
+  void render(const Camera& camera, const RenderSettings& settings, int width, int height);
+
+  Image readDisplay() const;
+  LinearImage readLinear() const;
+  // Copies the last rendered image into the window's back buffer.
+  void presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const;
+  // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
+  double gpuFrameMs() const { return gpuFrameMs_; }
+  size_t triangleCount() const { return triangleVertices_ / 3; }
+
+ private:
+  RenderTargets targets_;
+  ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
+  ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
+  ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
+  GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
+  GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
+  // Timer queries, two in flight so reading a result never stalls the frame.
+  std::array<GLuint, 2> timerQueries_{};
+  int frame_ = 0;
+  double gpuFrameMs_ = 0.0;
+};
+
+// Reads the window's back buffer (viewer screenshots include the panel).
+Image readDefaultFramebuffer(int width, int height);
+
+}  // namespace radview::gl

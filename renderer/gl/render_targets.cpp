@@ -1,0 +1,59 @@
+#include "gl/render_targets.h"
+
+#include "core/error.h"
+
+#include <string>
+
+namespace radview::gl {
+
+namespace {
+
+GLuint texture(GLenum format, int width, int height) {
+  GLuint t = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &t);
+  glTextureStorage2D(t, 1, format, width, height);
+  glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return t;
+}
+
+void requireComplete(GLuint fbo, const char* name) {
+  const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(std::string("OpenGL: the ") + name + " framebuffer is incomplete (status 0x" +
+                std::to_string(status) + ")");
+}
+
+}  // namespace
+
+RenderTargets::~RenderTargets() { release(); }
+
+void RenderTargets::release() {
+  glDeleteFramebuffers(1, &linearFbo_);
+  glDeleteFramebuffers(1, &displayFbo_);
+  GLuint textures[] = {linearColor_, displayColor_, depth_};
+  glDeleteTextures(3, textures);
+  linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = 0;
+}
+
+void RenderTargets::resize(int width, int height) {
+  if (width == width_ && height == height_ && linearFbo_) return;
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
+  release();
+  width_ = width;
+  height_ = height;
+  linearColor_ = texture(GL_RGBA32F, width, height);
+  displayColor_ = texture(GL_RGBA8, width, height);
+  depth_ = texture(GL_DEPTH_COMPONENT32F, width, height);
+  glCreateFramebuffers(1, &linearFbo_);
+  glNamedFramebufferTexture(linearFbo_, GL_COLOR_ATTACHMENT0, linearColor_, 0);
+  glNamedFramebufferTexture(linearFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+  requireComplete(linearFbo_, "linear");
+  glCreateFramebuffers(1, &displayFbo_);
+  glNamedFramebufferTexture(displayFbo_, GL_COLOR_ATTACHMENT0, displayColor_, 0);
+  glNamedFramebufferTexture(displayFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+  requireComplete(displayFbo_, "display");
+}
+
+}  // namespace radview::gl

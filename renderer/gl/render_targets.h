@@ -1,0 +1,32 @@
+#pragma once
+// The renderer's own framebuffers: `linear` holds radiosity as rendered (RGBA32F, alpha marks
+// covered pixels) and depth; `display` holds the tone-mapped image (RGBA8) and shares that
+// depth so overlays drawn after tone mapping are hidden by surfaces in front of them.
+// A window presents `display`; a headless render reads it back. Both see the same pixels.
+#include <epoxy/gl.h>
+
+namespace radview::gl {
+
+class RenderTargets {
+ public:
+  RenderTargets() = default;
+  ~RenderTargets();
+  RenderTargets(const RenderTargets&) = delete;
+  RenderTargets& operator=(const RenderTargets&) = delete;
+
+  // (Re)allocates when the size changes. Throws Error if the framebuffers are incomplete.
+  void resize(int width, int height);
+  int width() const { return width_; }
+  int height() const { return height_; }
+  GLuint linearFramebuffer() const { return linearFbo_; }
+  GLuint displayFramebuffer() const { return displayFbo_; }
+  GLuint linearTexture() const { return linearColor_; }
+
+ private:
+  void release();
+  int width_ = 0, height_ = 0;
+  GLuint linearFbo_ = 0, displayFbo_ = 0;
+  GLuint linearColor_ = 0, displayColor_ = 0, depth_ = 0;
+};
+
+}  // namespace radview::gl

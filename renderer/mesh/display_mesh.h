@@ -1,0 +1,30 @@
+#pragma once
+// What the GPU draws of a radiosity mesh: elements cut into triangles whose vertices carry
+// the nodal radiosities, and the element edges as line segments. Built on the CPU once per
+// mesh; no OpenGL here.
+#include "mesh/radiosity_mesh.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace radview {
+
+struct DisplayVertex {
+  glm::vec3 position;
+  glm::vec3 B;      // the node's radiosity
+  glm::vec3 Bflat;  // the element's mean radiosity (flat shading)
+};
+
+struct DisplayMesh {
+  std::vector<DisplayVertex> triangles;  // three vertices per triangle
+  std::vector<glm::vec3> elementEdges;   // two points per segment, each element edge once
+};
+
+// Linear elements are triangulated over their corners (triangulatePolygon: a fan when
+// convex). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
+// Gouraud shading passes through all six nodal values; other quadratic polygons are cut
+// over their corners only (their mid-edge values are shown by the higher-order methods).
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh);
+
+}  // namespace radview

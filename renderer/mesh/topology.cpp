@@ -1,0 +1,189 @@
+#include "mesh/topology.h"
+
+#include "core/error.h"
+#include "geom/point_grid.h"
+#include "geom/weld.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+
+namespace radview {
+
+namespace {
+
+uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
+
+// Compressed lists: the items of group g are items[start[g] .. start[g+1]).
+struct Lists {
+  std::vector<uint32_t> start, items;
+  template <typename F>
+  void forEach(uint32_t group, F f) const {
+    for (uint32_t k = start[group]; k < start[group + 1]; ++k) f(items[k]);
+  }
+};
+
+// Groups the values 0 .. groupOf.size()-1 by groupOf[value].
+Lists groupBy(const std::vector<uint32_t>& groupOf, uint32_t groupCount) {
+  Lists lists;
+  lists.start.assign(groupCount + 1, 0);
+  for (uint32_t g : groupOf) ++lists.start[g + 1];
+  for (uint32_t g = 0; g < groupCount; ++g) lists.start[g + 1] += lists.start[g];
+  lists.items.resize(groupOf.size());
+  std::vector<uint32_t> fill(lists.start.begin(), lists.start.end() - 1);
+  for (uint32_t v = 0; v < groupOf.size(); ++v) lists.items[fill[groupOf[v]]++] = v;
+  return lists;
+}
+
+// The elements each node belongs to (as a corner or a mid-edge node).
+Lists elementsOfNodes(const RadiosityMesh& mesh) {
+  std::vector<uint32_t> nodeOfUse, elementOfUse;
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e)
+    for (const auto* list : {&mesh.elements[e].corners, &mesh.elements[e].midEdge})
+      for (uint32_t node : *list) {
+        nodeOfUse.push_back(node);
+        elementOfUse.push_back(e);
+      }
+  Lists lists = groupBy(nodeOfUse, uint32_t(mesh.nodes.size()));
+  for (uint32_t& use : lists.items) use = elementOfUse[use];
+  return lists;
+}
+
+}  // namespace
+
+MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
+  std::vector<Vec3> nodePositions;
+  nodePositions.reserve(mesh.nodes.size());
+  for (const Node& node : mesh.nodes) nodePositions.push_back(node.position);
+  const double weldDistance = weldTolerance * mesh.bounds().diagonal();
+  const WeldedPoints welded = weldPoints(nodePositions, weldDistance);
+  positionId_ = welded.id;
+  positionCount_ = welded.count();
+
+  // Edges by their end positions: across a C-1 edge the two sides have their own nodes but
+  // the same positions, so they still meet here.
+  std::unordered_map<uint64_t, uint32_t> edgeOfKey;
+  elementEdges_.resize(mesh.elements.size());
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    const std::vector<uint32_t>& corners = mesh.elements[e].corners;
+    for (uint32_t i = 0; i < corners.size(); ++i) {
+      RADVIEW_CHECK(corners[i] < mesh.nodes.size());
+      const uint32_t a = positionId_[corners[i]], b = positionId_[corners[(i + 1) % corners.size()]];
+      auto [it, added] = edgeOfKey.emplace(edgeKey(a, b), uint32_t(edges_.size()));
+      if (added) {
+        MeshEdge edge;
+        edge.a = std::min(a, b);
+        edge.b = std::max(a, b);
+        edges_.push_back(edge);
+      }
+      edges_[it->second].sides.push_back({e, i});
+      elementEdges_[e].push_back(it->second);
+    }
+  }
+
+  // An edge tagged more than once keeps its lowest order (the weaker continuity wins).
+  for (size_t d = 0; d < mesh.discontinuities.size(); ++d) {
+    const DiscontinuityEdge& tag = mesh.discontinuities[d];
+    const std::string name = "discontinuity edge " + std::to_string(d) + " (nodes " + std::to_string(tag.a) +
+                             "-" + std::to_string(tag.b) + ")";
+    if (tag.a >= mesh.nodes.size() || tag.b >= mesh.nodes.size())
+      throw Error(name + " refers to a node out of range");
+    auto it = edgeOfKey.find(edgeKey(positionId_[tag.a], positionId_[tag.b]));
+    if (it == edgeOfKey.end()) throw Error(name + " is not an element edge");
+    MeshEdge& edge = edges_[it->second];
+    edge.continuity = std::min(edge.continuity, tag.order);
+  }
+
+  findTVertices(mesh, welded.position, weldDistance);
+}
+
+// C&W §9.2: a T-vertex is a node inside an edge of a coplanar element that does not have it.
+// Coplanar means parallel normals facing the same way (the two faces of a thin wall are not one
+// surface); the planes then coincide, since both contain the node. Walls meeting at a corner
+// are not coplanar, so a floor node on the bottom edge of a wall is no T-vertex.
+void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Vec3>& positions,
+                                 double weldDistance) {
+  std::vector<Vec3> normals;
+  normals.reserve(mesh.elements.size());
+  for (size_t e = 0; e < mesh.elements.size(); ++e) normals.push_back(mesh.elementNormal(e));
+  const Lists elementsOfNode = elementsOfNodes(mesh);
+  const Lists nodesAtPosition = groupBy(positionId_, positionCount_);
+  auto hasPosition = [&](uint32_t element, uint32_t position) {
+    const Element& el = mesh.elements[element];
+    for (const auto* list : {&el.corners, &el.midEdge})
+      for (uint32_t node : *list)
+        if (positionId_[node] == position) return true;
+    return false;
+  };
+  auto coplanarWithNode = [&](uint32_t element, uint32_t node) {
+    bool coplanar = false;
+    elementsOfNode.forEach(node, [&](uint32_t own) {
+      coplanar |= normals[element] != Vec3(0.0) && glm::dot(normals[own], normals[element]) >= 1.0 - 1e-6;
+    });
+    return coplanar;
+  };
+
+  // Grid cells about the mean edge length: an edge then meets a few cells per unit of length.
+  double lengthSum = 0.0;
+  for (const MeshEdge& edge : edges_) lengthSum += glm::distance(positions[edge.a], positions[edge.b]);
+  if (!(lengthSum > 0.0)) return;
+  const double diagonal = mesh.bounds().diagonal();
+  const double cellSize = std::max(lengthSum / double(edges_.size()), 1e-6 * diagonal);
+  PointGrid grid(mesh.bounds().lo, cellSize, positions.size());
+  for (uint32_t p = 0; p < positions.size(); ++p) grid.insert(p, positions[p]);
+
+  std::vector<uint32_t> visitedBy(positionCount_, UINT32_MAX);
+  for (uint32_t index = 0; index < edges_.size(); ++index) {
+    const MeshEdge& edge = edges_[index];
+    const Vec3 A = positions[edge.a], B = positions[edge.b];
+    const double L = glm::distance(A, B);
+    if (L == 0.0) continue;
+    // "On the edge": within a relative 1e-5 of its length (or the weld distance) of its line.
+    const double tolerance = 1e-5 * L + weldDistance;
+    // Sample the edge every cellSize or less; boxes of half-width step/2 + tolerance about the
+    // samples cover every point within `tolerance` of it.
+    const int steps = int(std::ceil(L / cellSize));  // cellSize >= 1e-6 diagonal: at most 1e6
+    const Vec3 reach(0.5 * L / steps + tolerance);
+    for (int k = 0; k <= steps; ++k) {
+      const Vec3 sample = A + (double(k) / steps) * (B - A);
+      grid.forEachNear(sample - reach, sample + reach, [&](uint32_t p) {
+        if (visitedBy[p] == index || p == edge.a || p == edge.b) return;
+        visitedBy[p] = index;
+        const double t = glm::dot(positions[p] - A, B - A) / (L * L);
+        if (t * L <= tolerance || (1.0 - t) * L <= tolerance) return;
+        if (glm::distance(positions[p], A + t * (B - A)) > tolerance) return;
+        nodesAtPosition.forEach(p, [&](uint32_t node) {
+          for (const EdgeSide& side : edge.sides) {
+            if (hasPosition(side.element, p) || !coplanarWithNode(side.element, node)) continue;
+            // t runs from edge.a; the side's edge may run the other way.
+            const bool forward = positionId_[mesh.elements[side.element].corners[side.edge]] == edge.a;
+            tVertices_.push_back({node, side.element, side.edge, forward ? t : 1.0 - t});
+          }
+        });
+      });
+    }
+  }
+  std::sort(tVertices_.begin(), tVertices_.end(), [](const TVertex& x, const TVertex& y) {
+    return std::tie(x.element, x.edge, x.t, x.node) < std::tie(y.element, y.edge, y.t, y.node);
+  });
+}
+
+uint32_t MeshTopology::edgeIndex(uint32_t element, uint32_t edge) const {
+  return elementEdges_[element][edge];
+}
+
+int64_t MeshTopology::neighbour(uint32_t element, uint32_t edge) const {
+  const std::vector<EdgeSide>& sides = edges_[edgeIndex(element, edge)].sides;
+  if (sides.size() != 2) return -1;
+  const bool first = sides[0].element == element && sides[0].edge == edge;
+  return sides[first ? 1 : 0].element;
+}
+
+size_t MeshTopology::countEdges(Continuity order) const {
+  return size_t(
+      std::count_if(edges_.begin(), edges_.end(), [&](const MeshEdge& e) { return e.continuity == order; }));
+}
+
+}  // namespace radview

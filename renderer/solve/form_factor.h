@@ -1,0 +1,22 @@
+#pragma once
+// Form factors between a differential receiver area and a polygon (C&W ch. 4).
+#include "core/types.h"
+
+#include <vector>
+
+namespace radview {
+
+// The exact form factor F from a differential area at x with unit normal n to a Lambertian
+// planar polygon (vertices CCW about the side it emits from): the fraction of the energy
+// leaving dA that arrives at the polygon, so that a polygon of exitance E gives dA the
+// radiosity rho * E * F (no visibility: nothing occludes).
+//
+// Parts of the polygon below the receiver's horizon contribute nothing: they are clipped away
+// first. The result is in [0, 1] and never NaN. A polygon seen from behind, edge-on (x on its
+// plane, within 1e-12 of its size), entirely below the horizon, or degenerate gives 0. The
+// edge-on 0 is also the limit from the front everywhere except on the closed polygon itself
+// (a receiver touching the emitter), where F jumps. Preconditions (always checked): x, n and
+// the vertices are finite and n has unit length.
+double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon);
+
+}  // namespace radview

@@ -1,0 +1,4 @@
+#version 450 core
+layout(location = 0) in vec3 position;
+uniform mat4 clipFromWorld;
+void main() { gl_Position = clipFromWorld * vec4(position, 1.0); }

@@ -1,0 +1,72 @@
+#include "core/camera.h"
+#include "core/error.h"
+#include "scene/scene.h"
+
+#include <gtest/gtest.h>
+
+namespace radview {
+namespace {
+
+Bounds unitBox() {
+  Bounds b;
+  b.extend({-1, -1, -1});
+  b.extend({1, 1, 1});
+  return b;
+}
+
+TEST(Camera, PresetsLookAtTheCentreAndEncloseTheBounds) {
+  for (const std::string& name : cameraPresetNames()) {
+    if (name == "file") continue;
+    const Camera c = cameraFromSpec(name, unitBox(), {});
+    EXPECT_NEAR(glm::length(c.target), 0.0, 1e-12) << name;
+    const double distance = glm::length(c.eye - c.target);
+    EXPECT_GT(distance, std::sqrt(3.0)) << name;
+    EXPECT_LT(c.zNear, distance - std::sqrt(3.0) + 1e-9) << name;
+    EXPECT_GT(c.zFar, distance + std::sqrt(3.0) - 1e-9) << name;
+  }
+}
+
+TEST(Camera, EmptySpecPrefersTheFileCamera) {
+  SceneCamera file;
+  file.eye = {0, 0, 5};
+  file.target = {0, 0, 0};
+  file.yfov = 0.5;
+  EXPECT_DOUBLE_EQ(cameraFromSpec("", unitBox(), {file}).yfov, 0.5);
+  EXPECT_EQ(cameraFromSpec("", unitBox(), {}).eye, cameraFromSpec("front", unitBox(), {}).eye);
+}
+
+TEST(Camera, EyeTargetUpSpec) {
+  const Camera c = cameraFromSpec("0,0,4/0,0,0/1,0,0", unitBox(), {});
+  EXPECT_EQ(c.eye, Vec3(0, 0, 4));
+  EXPECT_EQ(c.up, Vec3(1, 0, 0));
+}
+
+TEST(Camera, BadSpecsAreClearErrors) {
+  for (const char* spec : {"nowhere", "1,2/3,4,5", "0,0,0/0,0,0", "0,0,1/0,0,0/0,0,1", "0,0,1/0,0,nan", "a,b,c/0,0,0"}) {
+    try {
+      cameraFromSpec(spec, unitBox(), {});
+      ADD_FAILURE() << "accepted " << spec;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(spec), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(cameraFromSpec("file", unitBox(), {}), Error);
+}
+
+TEST(Camera, RollBy45DegreesEightTimesIsTheIdentity) {
+  Camera c = cameraFromSpec("iso", unitBox(), {});
+  const Vec3 up = c.up;
+  for (int i = 0; i < 8; ++i) roll(c, glm::radians(45.0));
+  EXPECT_NEAR(glm::length(c.up - up), 0.0, 1e-12);
+}
+
+TEST(Camera, OrbitKeepsTheDistanceAndNeverFlipsOverThePole) {
+  Camera c = cameraFromSpec("front", unitBox(), {});
+  const double distance = glm::length(c.eye - c.target);
+  for (int i = 0; i < 100; ++i) orbit(c, 0.1, 0.2);
+  EXPECT_NEAR(glm::length(c.eye - c.target), distance, 1e-9);
+  EXPECT_GT(glm::length(glm::cross(c.forward(), c.up)), 1e-3);
+}
+
+}  // namespace
+}  // namespace radview

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Runs the real viewer window under Xvfb for a few frames, takes its screenshot, and checks
+# that it shows the scene and the panel (check_screenshot).
+#   viewer_screenshot_test.sh RADVIEW CHECKER OUT_DIR FILE
+set -u
+radview=$1 checker=$2 out_dir=$3 file=$4
+mkdir -p "$out_dir"
+out="$out_dir/viewer-window.png"
+rm -f "$out"
+xvfb-run -a -s "-screen 0 1400x900x24" "$radview" "$file" --frames 5 --size 1200x800 --screenshot "$out" \
+  || { echo "the viewer failed under Xvfb"; exit 1; }
+"$checker" "$out"

@@ -1,0 +1,27 @@
+# Finds radview's dependencies (all Debian 12 packages, installed by install-deps.sh)
+# and papers over the packaging quirks recorded in ../shared/PLATFORM.md.
+find_package(PkgConfig REQUIRED)
+find_package(glm CONFIG REQUIRED)
+find_package(glfw3 3.3 CONFIG REQUIRED)
+find_package(TinyGLTF CONFIG REQUIRED)
+find_package(nlohmann_json CONFIG REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+find_package(CGAL REQUIRED)
+find_package(OpenImageIO CONFIG REQUIRED)
+pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET epoxy)
+pkg_check_modules(imgui REQUIRED IMPORTED_TARGET imgui)
+
+# OpenImageIO's config names /usr/include/opencv4, which exists only with OpenCV installed;
+# CMake refuses a missing include directory, so drop the entries that do not exist.
+get_target_property(_oiio_includes OpenImageIO::OpenImageIO INTERFACE_INCLUDE_DIRECTORIES)
+set(_oiio_existing "")
+foreach(_dir IN LISTS _oiio_includes)
+  if(EXISTS "${_dir}" OR _dir MATCHES "^\\$<")
+    list(APPEND _oiio_existing "${_dir}")
+  endif()
+endforeach()
+set_target_properties(OpenImageIO::OpenImageIO PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_oiio_existing}")
+
+if(RADVIEW_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
