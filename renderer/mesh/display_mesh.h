@@ -22,7 +22,8 @@ struct DisplayMesh {
 };
 
 // Linear elements are triangulated over their corners (triangulatePolygon: a fan when
-// convex). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
+// strictly convex, else a constrained Delaunay triangulation, so a T-vertex listed as a
+// corner gets no zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
 // Gouraud shading passes through all six nodal values; other quadratic polygons are cut
 // over their corners only (their mid-edge values are shown by the higher-order methods).
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh);

@@ -112,7 +112,13 @@ std::vector<std::array<uint32_t, 3>> displayTriangles(const RadiosityMesh& mesh,
     if (e.midEdge.empty()) {
       addTriangulated(e.corners);
     } else if (isConvex(mesh.cornerPositions(element))) {
-      for (size_t i = 0; i < n; ++i) out.push_back({e.midEdge[(i + n - 1) % n], e.corners[i], e.midEdge[i]});
+      for (size_t i = 0; i < n; ++i) {
+        const std::array<uint32_t, 3> cut{e.midEdge[(i + n - 1) % n], e.corners[i], e.midEdge[i]};
+        // At a straight corner (a T-vertex turned corner) the cut is flat: nothing to show.
+        const std::vector<Vec3> cutPositions{mesh.nodes[cut[0]].position, mesh.nodes[cut[1]].position,
+                                             mesh.nodes[cut[2]].position};
+        if (unitNormal(cutPositions) != Vec3(0.0)) out.push_back(cut);
+      }
       addTriangulated(e.midEdge);
     } else {
       std::vector<uint32_t> ring;

@@ -55,23 +55,22 @@ PolygonPlan planPolygon(const std::vector<Vec3>& v) {
   return plan;
 }
 
-// The smallest size whose mesh fits under the cap, rounded up to 3 significant digits. The
-// count only falls as the size grows (every ceil does), so bisection finds it; the count
-// falls as 1 / size^2, which gives the start.
+// The smallest element size whose mesh fits under the cap, rounded up to 3 significant digits,
+// or 0 if none does (more polygons than the cap). The count only falls as the size grows
+// (every ceil does), so bisection finds it; geometric, as the sizes may span many decades.
 double sizeThatFits(const std::vector<PolygonPlan>& plans, double elementSize) {
   auto fits = [&](double size) { return elementCount(plans, size) <= double(kMaxUniformElements); };
+  double enough = 0.0;  // no edge longer than this: every polygon gets its fewest elements
+  for (const PolygonPlan& plan : plans)
+    enough = std::max({enough, plan.lengthU, plan.lengthV, plan.longestEdge});
+  if (!fits(enough)) return 0.0;
   double tooSmall = elementSize;
-  double size = elementSize * std::sqrt(elementCount(plans, elementSize) / double(kMaxUniformElements));
-  while (!fits(size)) {
-    tooSmall = size;
-    size *= 1.1;
+  for (int i = 0; i < 200; ++i) {
+    const double middle = std::sqrt(tooSmall * enough);
+    (fits(middle) ? enough : tooSmall) = middle;
   }
-  for (int i = 0; i < 60; ++i) {
-    const double middle = 0.5 * (tooSmall + size);
-    (fits(middle) ? size : tooSmall) = middle;
-  }
-  const double unit = std::pow(10.0, std::floor(std::log10(size)) - 2);
-  return std::ceil(size / unit) * unit;
+  const double unit = std::pow(10.0, std::floor(std::log10(enough)) - 2);
+  return std::ceil(enough / unit) * unit;
 }
 
 // An element count as text: exact while it is an integer a double holds exactly.
@@ -173,8 +172,13 @@ RadiosityMesh meshUniformly(const Scene& scene, double elementSize) {
   if (total > double(kMaxUniformElements)) {
     std::ostringstream os;
     os << "element size " << elementSize << " gives " << countText(total) << " elements, more than the "
-       << kMaxUniformElements << " allowed; an element size of " << sizeThatFits(plans, elementSize)
-       << " or more fits";
+       << kMaxUniformElements << " allowed; ";
+    const double fitting = sizeThatFits(plans, elementSize);
+    if (fitting > 0.0) {
+      os << "an element size of " << fitting << " or more fits";
+    } else {
+      os << "no element size fits (too many polygons)";
+    }
     throw Error(os.str());
   }
 

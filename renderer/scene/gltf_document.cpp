@@ -77,9 +77,11 @@ std::string lowerExtension(const std::string& path) {
 }
 
 // Filesystem callbacks for tinygltf: only regular files, never larger than kMaxFileBytes. The
-// defaults would open a directory (and try to allocate its "size", 2^63 bytes: this is what
-// crashed tinygltf on corpus invalid/tinygltf/issue-416.gltf, whose image uri decodes to the
-// base directory) or block forever on a FIFO or /dev/zero named by a uri.
+// defaults open whatever a uri names. Corpus invalid/tinygltf/issue-416.gltf has an image uri
+// that decodes to a name starting with a NUL byte, so the C file API opens the base directory
+// and tinygltf allocates its "size", 2^63 bytes, and crashes (the no-op image loader alone does
+// not prevent that: the file is read before any image is decoded). A FIFO or /dev/zero named
+// by a uri would block or exhaust memory the same way.
 bool regularFileExists(const std::string& path, void*) {
   std::error_code ec;
   return fs::is_regular_file(path, ec);
@@ -202,7 +204,7 @@ const char* typeName(int components) {
   }
 }
 
-// One component; normalized integers per spec §3.11 ("Animations" table of decodings).
+// One component; normalized integers as the glTF 2.0 spec decodes them (e.g. max(c / 127, -1)).
 double decodeComponent(const unsigned char* p, int code, bool normalized) {
   switch (code) {
     case TINYGLTF_COMPONENT_TYPE_BYTE: {
@@ -263,7 +265,7 @@ class AccessorReader {
       if (count > kMaxZeroFilledCount)
         fail("has no bufferView and a count of " + std::to_string(count) + ", more than radview accepts (" +
              std::to_string(kMaxZeroFilledCount) + ")");
-      values.assign(count * components, 0.0);  // spec §3.6.2.4: no bufferView means zeros
+      values.assign(count * components, 0.0);  // the spec: no bufferView means zeros
     } else {
       if (accessor.byteOffset % type->size != 0)
         fail("byteOffset " + std::to_string(accessor.byteOffset) +
@@ -357,7 +359,7 @@ class AccessorReader {
     return data.data() + view.byteOffset + offset;
   }
 
-  // Spec §3.6.2.3: `count` (index, value) pairs override elements of the base data.
+  // Sparse storage: `count` (index, value) pairs override elements of the base data.
   void applySparse(const tinygltf::Accessor& accessor, const ComponentType& type,
                    std::vector<double>& values) const {
     const auto& sparse = accessor.sparse;
@@ -472,13 +474,15 @@ std::vector<uint32_t> GltfDocument::readUnsigned(int index, const std::string& w
   const double restartValue = std::ldexp(1.0, int(8 * type->size)) - 1.0;
   std::vector<uint32_t> out(values.size());
   for (size_t i = 0; i < values.size(); ++i) {
-    const std::string where = what + ": accessor " + std::to_string(index) + ": element " + std::to_string(i);
-    if (restart == Restart::Forbidden && values[i] == restartValue)
-      throw Error(path_, where + " is the primitive-restart value " + std::to_string(uint64_t(restartValue)) +
-                             ", which glTF forbids in indices");
-    if (values[i] >= double(limit))
+    const bool isRestart = restart == Restart::Forbidden && values[i] == restartValue;
+    if (isRestart || values[i] >= double(limit)) {
+      const std::string where = what + ": accessor " + std::to_string(index) + ": element " + std::to_string(i);
+      if (isRestart)
+        throw Error(path_, where + " is the primitive-restart value " + std::to_string(uint64_t(restartValue)) +
+                               ", which glTF forbids in indices");
       throw Error(path_, where + " is " + std::to_string(uint64_t(values[i])) + ", out of range (must be < " +
                              std::to_string(limit) + ")");
+    }
     out[i] = uint32_t(values[i]);
   }
   return out;

@@ -19,7 +19,7 @@ class Model;
 
 namespace radview {
 
-// glTF component types (spec §5.1.3 accessor.componentType) as bits, so a reader can say
+// glTF component types (accessor.componentType in the glTF 2.0 spec) as bits, so a reader can say
 // which ones a use allows.
 enum ComponentTypeBit : unsigned {
   kByte = 1u << 0,           // 5120
@@ -37,7 +37,7 @@ struct AccessorRequest {
   std::string what;
   int components = 3;                // 1 SCALAR, 2 VEC2, 3 VEC3, 4 VEC4
   unsigned componentTypes = kFloat;  // the ComponentTypeBits allowed
-  // Whether integer data may be `normalized` (decoded to [0,1] or [-1,1] per spec §3.11).
+  // Whether integer data may be `normalized` (decoded to [0,1] or [-1,1] as the spec says).
   // Integer data that is not normalized is read as its exact integer value.
   bool normalizedAllowed = false;
 };
@@ -66,7 +66,7 @@ class GltfDocument {
   std::vector<double> readAccessor(int index, const AccessorRequest& request) const;
   std::vector<Vec3> readVec3(int index, const AccessorRequest& request) const;
   // An unsigned integer SCALAR accessor (not normalized) whose every value is < `limit`.
-  // For `indices`, also refuses glTF's forbidden primitive-restart values (spec §3.7.2.1).
+  // For `indices`, also refuses the primitive-restart values glTF forbids there.
   enum class Restart { Allowed, Forbidden };
   std::vector<uint32_t> readUnsigned(int index, const std::string& what, uint64_t limit,
                                      Restart restart = Restart::Allowed) const;

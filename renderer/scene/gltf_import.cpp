@@ -66,8 +66,8 @@ class SceneImporter {
  private:
   [[noreturn]] void fail(const std::string& problem) const { throw Error(doc_.path(), problem); }
 
-  // glTF nodes form a forest (spec §3.5.1): every child index in range, at most one parent
-  // per node, no cycles. Returns each node's parent (-1 for roots).
+  // glTF nodes form a forest (spec, "Nodes and Hierarchy"): every child index in range, at
+  // most one parent per node, no cycles. Returns each node's parent (-1 for roots).
   std::vector<int> checkNodeTree() const {
     const int count = int(model_.nodes.size());
     std::vector<int> parent(size_t(count), -1);
@@ -150,7 +150,7 @@ class SceneImporter {
     }
   }
 
-  // Spec §3.5.2: either a column-major matrix or T * R * S.
+  // Spec, "Transformations": either a column-major matrix or T * R * S.
   Mat4 localTransform(const tinygltf::Node& node, int index) const {
     const std::string name = "node " + std::to_string(index);
     auto checkVector = [&](const std::vector<double>& v, size_t size, const char* property) {
@@ -243,7 +243,7 @@ class SceneImporter {
       }
       scene_.polygons.push_back({{pa, pb, pc}, material});
     };
-    // Spec §3.7.2.1 gives the vertex order of each triangle of a strip and a fan.
+    // The spec ("Meshes") gives the vertex order of each triangle of a strip and a fan.
     const size_t n = indices.size();
     if (n < 3) {
       ++tooFewVertices_;
@@ -311,7 +311,7 @@ class SceneImporter {
     const double yfov = camera.perspective.yfov;
     if (!(yfov > 0.0 && yfov < M_PI))
       fail("camera " + std::to_string(node.camera) + ": yfov " + std::to_string(yfov) + " is not in (0, pi)");
-    // Spec §3.10.1: the camera looks down its node's -Z with +Y up.
+    // Spec, "Cameras": the camera looks down its node's -Z with +Y up.
     const glm::dmat3 linear(worldFromCamera);
     const Vec3 eye(worldFromCamera[3]);
     const Vec3 forward = glm::normalize(linear * Vec3(0.0, 0.0, -1.0));

@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
         const uint8_t* p = pixel(x, y);
         colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
         if (p[0] > 100 && p[0] > 2 * p[1] && p[0] > 2 * p[2]) ++red;
-        if (p[1] > 60 && p[1] > 1.5 * p[0] && p[1] > 1.5 * p[2]) ++green;
+        if (p[1] > 60 && p[1] > 1.2 * p[0] && p[1] > 2 * p[2]) ++green;  // olive under the warm light
       }
     // Panel text: near-white pixels inside the panel's corner (ImGui draws text at ~(230,230,230)).
     for (int y = 10; y < 200 && y < image.height; ++y)

@@ -117,7 +117,9 @@ TEST(GltfCorpus, EveryModelLoadsOrIsRefusedClearly) {
         ++readerRefused[set];
         std::cout << "[corpus]   reader refuses\t" << r.file << "\t" << problem << "\n";
       }
-      if (set == "valid") EXPECT_EQ(problem, "") << r.file << ": the validated reader refuses valid data";
+      if (set == "valid") {
+        EXPECT_EQ(problem, "") << r.file << ": the validated reader refuses valid data";
+      }
     }
     if (set == "valid" && r.outcome == Outcome::Refused) {
       EXPECT_FALSE(r.detail.empty()) << r.file << " refused without a reason";
