@@ -42,9 +42,10 @@ void printMesh(const RadiosityMesh& mesh) {
   printShapes(byShape);
   std::cout << "; linear " << linear << ", quadratic " << quadratic << "; emitting " << emitting << '\n';
   std::cout << "T-vertices: " << topology.tVertices().size() << '\n';
-  size_t byOrder[3] = {0, 0, 0};  // C-1, C0, C1 as tagged in the file
-  for (const DiscontinuityEdge& d : mesh.discontinuities) byOrder[static_cast<int>(d.order) + 1]++;
-  std::cout << "discontinuity edges: C-1 " << byOrder[0] << ", C0 " << byOrder[1] << ", C1 " << byOrder[2] << '\n';
+  // Edges, each once, by the continuity the file tags them with (an edge tagged C1 is
+  // indistinguishable from an untagged one, so only the discontinuities are counted).
+  std::cout << "discontinuity edges: " << toString(Continuity::Cm1) << ' ' << topology.countEdges(Continuity::Cm1)
+            << ", " << toString(Continuity::C0) << ' ' << topology.countEdges(Continuity::C0) << '\n';
 }
 
 }  // namespace

@@ -40,7 +40,6 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 int runRender(const RenderOptions& options) {
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  gl::shadingMethodFromName(options.display.method);  // a bad name fails before the file is read
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   renderHeadless(viewed, options.display, width, height, options.out);

@@ -26,6 +26,17 @@ struct InfoOptions {
   double elementSize = 0.0;
 };
 
+struct SampleOptions {
+  std::string file;
+  std::string method = "clough-tocher";
+  std::string points;          // a file, '-' for standard input, or the points themselves
+  std::string diagonal = "02";  // linear: the quad diagonal, 02 or 13
+  std::string variant = "affine";  // clough-tocher: affine or book
+  bool estimateGradients = false;  // ignore gradients stored in the file
+  double maxDistance = -1.0;       // world points farther from every element are errors
+  double elementSize = 0.0;
+};
+
 struct ViewerOptions {
   std::string file;  // empty: the bundled Cornell box
   int frames = 0;    // > 0: run that many frames, then exit
@@ -36,6 +47,7 @@ struct ViewerOptions {
 
 int runRender(const RenderOptions& options);
 int runInfo(const InfoOptions& options);
+int runSample(const SampleOptions& options);
 // Opens the window; where no display exists, renders headless to a PNG instead (unless a
 // window was explicitly asked for with --frames/--screenshot) and prints its path.
 int runViewer(const ViewerOptions& options);

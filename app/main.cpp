@@ -5,6 +5,9 @@
 #include "app/viewer_panel.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/strings.h"
+#include "gl/mesh_renderer.h"
+#include "interp/interpolant.h"
 
 #include <CLI/CLI.hpp>
 
@@ -15,15 +18,10 @@ namespace {
 
 using namespace radview;
 
-std::string presetList() {
-  std::string out;
-  for (const std::string& name : cameraPresetNames()) out += (out.empty() ? "" : ", ") + name;
-  return out;
-}
 
 void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_option("--method", d.method, "Interpolant: flat (one value per element) or gouraud (linear)")
-      ->check(CLI::IsMember({"flat", "gouraud"}))
+      ->check(CLI::IsMember(gl::shadingMethodNames()))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
                    "Gouraud linear in screen space, as scanline hardware did, not perspective-correct");
@@ -31,12 +29,12 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
       ->check(CLI::Range(-40.0, 40.0))
       ->capture_default_str();
   command.add_option("--camera", d.camera,
-                     "A preset (" + presetList() + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
+                     "A preset (" + joined(cameraPresetNames()) + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
                      "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
   command.add_option("--element-size", d.elementSize,
                      "Scenes: edge length of the uniform mesh's elements (default: bounds diagonal / 40)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-12, 1e12));
 }
 
 }  // namespace
@@ -48,10 +46,15 @@ int main(int argc, char** argv) {
                "radview"};
   app.footer(std::string("\n") + shortcutHelp());
   app.require_subcommand(0, 1);
+  // One line, like every other radview error.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("radview: ") + e.what() + " (see --help)\n";
+  });
 
   ViewerOptions viewer;
   app.add_option("file", viewer.file, "A glTF scene (.gltf/.glb) or a radview solution file");
-  app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::PositiveNumber);
+  app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")
+      ->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
   addDisplayOptions(app, viewer.display);
@@ -71,12 +74,43 @@ int main(int argc, char** argv) {
       ->required();
   infoCommand->add_option("--element-size", info.elementSize,
                           "Scenes: element size of the uniform mesh that is reported")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-12, 1e12));
+
+  SampleOptions sample;
+  CLI::App* sampleCommand = app.add_subcommand(
+      "sample", "Print the reconstructed radiosity B and its surface gradient at points (CPU reference)");
+  sampleCommand->add_option("file", sample.file, "A glTF scene or radview solution file")->required();
+  sampleCommand->add_option("--method", sample.method, "Interpolant")
+      ->check(CLI::IsMember(methodNames()))
+      ->capture_default_str();
+  sampleCommand
+      ->add_option("--points", sample.points,
+                   "Points: a file, '-' (standard input), or the text itself; one per line or ';'-separated, "
+                   "each 'x y z' (world space, projected onto the nearest element) or 'element b0 b1 b2' "
+                   "(barycentric in the element's first three corners)")
+      ->required();
+  sampleCommand->add_option("--diagonal", sample.diagonal, "linear: cut quads along corners 02 or 13")
+      ->check(CLI::IsMember({"02", "13"}))
+      ->capture_default_str();
+  sampleCommand->add_option("--variant", sample.variant,
+                            "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book "
+                            "(edge normal)")
+      ->check(CLI::IsMember({"affine", "book"}))
+      ->capture_default_str();
+  sampleCommand->add_flag("--estimate-gradients", sample.estimateGradients,
+                          "Estimate vertex gradients even when the file stores them");
+  sampleCommand->add_option("--max-distance", sample.maxDistance,
+                            "World points farther than this from every element are errors (default: 1e-3 of "
+                            "the bounds diagonal)")
+      ->check(CLI::NonNegativeNumber);
+  sampleCommand->add_option("--element-size", sample.elementSize, "Scenes: element size of the uniform mesh")
+      ->check(CLI::Range(1e-12, 1e12));
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (*renderCommand) return runRender(render);
     if (*infoCommand) return runInfo(info);
+    if (*sampleCommand) return runSample(sample);
     if (viewer.file.empty()) viewer.file = bundledScenePath();
     return runViewer(viewer);
   } catch (const Error& e) {

@@ -109,16 +109,29 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   return 0;
 }
 
+// Ends GLFW, and ImGui when it was started, however runViewer is left.
+struct WindowSession {
+  GLFWwindow* window = nullptr;
+  bool imgui = false;
+  ~WindowSession() {
+    if (imgui) {
+      ImGui_ImplOpenGL3_Shutdown();
+      ImGui_ImplGlfw_Shutdown();
+      ImGui::DestroyContext();
+    }
+    if (window) glfwDestroyWindow(window);
+    glfwTerminate();
+  }
+};
+
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  if (options.frames < 0) throw Error("--frames must be positive");
   if (!options.screenshot.empty() && options.frames == 0)
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
 
-  gl::shadingMethodFromName(options.display.method);
   ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
 
   glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
@@ -126,103 +139,108 @@ int runViewer(const ViewerOptions& options) {
     if (options.frames > 0) throw Error("cannot open a window: " + glfwFailure);
     return renderInstead(options, viewed);
   }
+  WindowSession session;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(width, height, "radview", nullptr, nullptr);
-  if (!window) {
-    const std::string why = glfwFailure;
-    glfwTerminate();
-    throw Error("cannot open an OpenGL 4.5 core window: " + why);
+  session.window = glfwCreateWindow(width, height, "radview", nullptr, nullptr);
+  if (!session.window) {
+    // A display without OpenGL 4.5 (a remote X server, say): still show the file headless.
+    if (options.frames > 0) throw Error("cannot open an OpenGL 4.5 core window: " + glfwFailure);
+    return renderInstead(options, viewed);
   }
+  GLFWwindow* window = session.window;
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
 
+  ViewerState state;
+  state.settings.method = gl::shadingMethodFromName(options.display.method);
+  state.settings.perspectiveCorrect = !options.display.screenSpace;
+  state.settings.exposure = options.display.exposure;
+  state.settings.elementEdges = options.display.edges;
+  gl::MeshRenderer renderer;
+  renderer.setMesh(viewed.mesh);
+  show(state, std::move(viewed));
+  if (!options.display.camera.empty())
+    state.camera = state.homeCamera =
+        cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
+
+  Input input;
+  input.state = &state;
+  glfwSetWindowUserPointer(window, &input);
+  // Installed before ImGui's, which chains to them.
+  glfwSetKeyCallback(window, onKey);
+  glfwSetScrollCallback(window, onScroll);
+  glfwSetDropCallback(window, onDrop);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+  session.imgui = true;
+
   int status = 0;
-  {
-    ViewerState state;
-    state.settings.method = gl::shadingMethodFromName(options.display.method);
-    state.settings.perspectiveCorrect = !options.display.screenSpace;
-    state.settings.exposure = options.display.exposure;
-    state.settings.elementEdges = options.display.edges;
-    show(state, std::move(viewed));
-    if (!options.display.camera.empty())
-      state.camera = state.homeCamera =
-          cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
-
-    Input input;
-    input.state = &state;
-    glfwSetWindowUserPointer(window, &input);
-    // Installed before ImGui's, which chains to them.
-    glfwSetKeyCallback(window, onKey);
-    glfwSetScrollCallback(window, onScroll);
-    glfwSetDropCallback(window, onDrop);
-
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;
-    ImGui::StyleColorsDark();
-    ImGui_ImplGlfw_InitForOpenGL(window, true);
-    ImGui_ImplOpenGL3_Init("#version 450 core");
-
-    gl::MeshRenderer renderer;
-    renderer.setMesh(state.viewed.mesh);
-
-    for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
-      const auto start = std::chrono::steady_clock::now();
-      glfwPollEvents();
-      handleDrag(window, input);
-      if (!input.droppedPath.empty() || state.openRequested) {
-        const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
-        input.droppedPath.clear();
-        state.openRequested = false;
-        try {
-          show(state, openForViewing(path, options.display.elementSize));
-          renderer.setMesh(state.viewed.mesh);
-        } catch (const Error& e) {
-          state.status = e.what();  // keep showing the previous file
-        }
+  for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
+    const auto start = std::chrono::steady_clock::now();
+    glfwPollEvents();
+    handleDrag(window, input);
+    if (!input.droppedPath.empty() || state.openRequested) {
+      const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
+      input.droppedPath.clear();
+      state.openRequested = false;
+      // All or nothing: the previous file stays on screen and in the panel unless the new one
+      // both loads and uploads.
+      try {
+        ViewedFile next = openForViewing(path, options.display.elementSize);
+        renderer.setMesh(next.mesh);
+        show(state, std::move(next));
+      } catch (const std::exception& e) {
+        state.status = e.what();
       }
-      int fbWidth = 0, fbHeight = 0;
-      glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
-      if (fbWidth > 0 && fbHeight > 0) {
+    }
+    int fbWidth = 0, fbHeight = 0;
+    glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+    if (fbWidth > 0 && fbHeight > 0) {
+      try {
         fitClipPlanes(state.camera, state.viewed.mesh.bounds());
         renderer.render(state.camera, state.settings, fbWidth, fbHeight);
         renderer.presentToDefaultFramebuffer(fbWidth, fbHeight);
-        state.gpuFrameMs = renderer.gpuFrameMs();
-        state.triangles = renderer.triangleCount();
+      } catch (const std::exception& e) {
+        state.status = e.what();
       }
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
-      ImGui::NewFrame();
-      drawPanel(state);
-      ImGui::Render();
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
-      const bool lastFrame = options.frames > 0 && frame >= options.frames;
-      if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-        const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : nextScreenshotName();
-        try {
-          writePng(gl::readDefaultFramebuffer(fbWidth, fbHeight), path);
-          state.status = "screenshot written to " + path;
-          if (lastFrame) std::printf("%s\n", path.c_str());
-        } catch (const Error& e) {
-          state.status = e.what();
-          if (lastFrame) status = 1, std::fprintf(stderr, "radview: %s\n", e.what());
-        }
-        state.screenshotRequested = false;
-      }
-      glfwSwapBuffers(window);
-      state.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      if (lastFrame) break;
+      state.gpuFrameMs = renderer.gpuFrameMs();
+      state.triangles = renderer.triangleCount();
     }
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    drawPanel(state);
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+    const bool lastFrame = options.frames > 0 && frame >= options.frames;
+    if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
+      try {
+        const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : nextScreenshotName();
+        writePng(gl::readDefaultFramebuffer(fbWidth, fbHeight), path);
+        state.status = "screenshot written to " + path;
+        if (lastFrame) std::printf("%s\n", path.c_str());
+      } catch (const std::exception& e) {
+        state.status = e.what();
+        if (lastFrame) {
+          status = 1;
+          std::fprintf(stderr, "radview: %s\n", e.what());
+        }
+      }
+      state.screenshotRequested = false;
+    }
+    glfwSwapBuffers(window);
+    state.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (lastFrame) break;
   }
-  glfwDestroyWindow(window);
-  glfwTerminate();
   return status;
 }
 

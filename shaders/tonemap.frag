@@ -5,7 +5,6 @@ uniform sampler2D linearRadiosity;
 uniform float exposureScale;
 uniform vec3 background;
 
-in vec2 uv;
 layout(location = 0) out vec4 display;
 
 void main() {

@@ -1,6 +1,7 @@
 #include "core/camera.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 #include "scene/scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -45,7 +46,7 @@ bool parseVec3(const std::string& text, Vec3& out) {
   char comma1 = 0, comma2 = 0;
   if (!(is >> out.x >> comma1 >> out.y >> comma2 >> out.z) || comma1 != ',' || comma2 != ',') return false;
   is >> std::ws;
-  return is.eof() && std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z);
+  return is.eof() && isFinite(out);
 }
 
 Camera fromEyeTargetUp(const std::string& spec) {
@@ -91,9 +92,7 @@ Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::
   } else if (name.find('/') != std::string::npos) {
     c = fromEyeTargetUp(name);
   } else {
-    std::string names;
-    for (const std::string& n : cameraPresetNames()) names += (names.empty() ? "" : ", ") + n;
-    throw Error("--camera '" + spec + "': unknown preset (use one of " + names + ", or ex,ey,ez/tx,ty,tz[/ux,uy,uz])");
+    throw Error("--camera '" + spec + "': unknown preset (use one of " + joined(cameraPresetNames()) + ", or ex,ey,ez/tx,ty,tz[/ux,uy,uz])");
   }
   fitClipPlanes(c, bounds);
   return c;

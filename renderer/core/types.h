@@ -3,6 +3,7 @@
 // reference); the GPU gets floats.
 #include <glm/glm.hpp>
 
+#include <cmath>
 #include <limits>
 #include <ostream>
 
@@ -23,10 +24,12 @@ struct Bounds {
     hi = glm::max(hi, p);
   }
   bool empty() const { return lo.x > hi.x; }
-  Vec3 center() const { return 0.5 * (lo + hi); }
+  Vec3 center() const { return empty() ? Vec3(0.0) : 0.5 * (lo + hi); }
   Vec3 extent() const { return empty() ? Vec3(0.0) : hi - lo; }
   double diagonal() const { return glm::length(extent()); }
 };
+
+inline bool isFinite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 inline std::ostream& operator<<(std::ostream& os, const Vec3& v) {
   return os << '(' << v.x << ", " << v.y << ", " << v.z << ')';

@@ -27,9 +27,7 @@ double boundingDiagonal(const std::vector<Vec3>& vertices) {
 }
 
 bool allFinite(const std::vector<Vec3>& vertices) {
-  return std::all_of(vertices.begin(), vertices.end(), [](const Vec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-  });
+  return std::all_of(vertices.begin(), vertices.end(), [](const Vec3& p) { return isFinite(p); });
 }
 
 // Sine of the smallest turn, relative to the normal, or -inf when the polygon is not convex:

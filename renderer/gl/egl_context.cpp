@@ -1,6 +1,7 @@
 #include "gl/egl_context.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
@@ -13,13 +14,6 @@ namespace radview::gl {
 
 namespace {
 
-bool hasExtension(const char* list, const char* name) {
-  if (!list) return false;
-  const size_t length = std::strlen(name);
-  for (const char* p = list; (p = std::strstr(p, name)); p += length)
-    if ((p == list || p[-1] == ' ') && (p[length] == ' ' || p[length] == '\0')) return true;
-  return false;
-}
 
 // Initialises `display` and makes a GL 4.5 core context current on it, or explains why not.
 bool makeContext(EGLDisplay display, EGLContext& context, std::string& why) {
@@ -36,7 +30,7 @@ bool makeContext(EGLDisplay display, EGLContext& context, std::string& why) {
   const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configCount = 0;
-  const bool noConfig = hasExtension(eglQueryString(display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
+  const bool noConfig = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
   if (!noConfig && (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount == 0)) {
     why = "no OpenGL-renderable config";
     eglTerminate(display);
@@ -47,7 +41,7 @@ bool makeContext(EGLDisplay display, EGLContext& context, std::string& why) {
                                       EGL_NONE};
   context = eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT, contextAttributes);
   if (context == EGL_NO_CONTEXT) {
-    why = "no OpenGL 4.5 core context (EGL error 0x" + std::to_string(eglGetError()) + ")";
+    why = "no OpenGL 4.5 core context (EGL error " + hexCode(eglGetError()) + ")";
     eglTerminate(display);
     return false;
   }
@@ -67,14 +61,13 @@ EglContext::EglContext() {
   const std::string choice = only ? only : "";
   if (!choice.empty() && choice != "surfaceless" && choice != "device")
     throw Error("RADVIEW_EGL_PLATFORM='" + choice + "': expected 'surfaceless' or 'device'");
-  const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
   std::string tried;
   EGLDisplay display = EGL_NO_DISPLAY;
   EGLContext context = EGL_NO_CONTEXT;
   std::string platform;
 
   if (choice != "device") {
-    if (hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) {
+    if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_MESA_platform_surfaceless")) {
       EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
       std::string why;
       if (makeContext(d, context, why)) {
@@ -88,7 +81,7 @@ EglContext::EglContext() {
     }
   }
   if (display == EGL_NO_DISPLAY && choice != "surfaceless") {
-    if (hasExtension(clientExtensions, "EGL_EXT_platform_device")) {
+    if (epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device")) {
       EGLint count = 0;
       eglQueryDevicesEXT(0, nullptr, &count);
       std::vector<EGLDeviceEXT> devices(static_cast<size_t>(std::max(count, 0)));

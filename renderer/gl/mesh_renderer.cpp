@@ -1,6 +1,7 @@
 #include "gl/mesh_renderer.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 #include "mesh/display_mesh.h"
 
 #include <algorithm>
@@ -18,19 +19,24 @@ ShadingMethod shadingMethodFromName(const std::string& name) {
   const auto& names = shadingMethodNames();
   for (size_t i = 0; i < names.size(); ++i)
     if (names[i] == name) return static_cast<ShadingMethod>(i);
-  throw Error("unknown shading method '" + name + "' (expected flat or gouraud)");
+  throw Error("unknown shading method '" + name + "' (expected one of " + joined(names) + ")");
 }
 
 namespace {
 
-// Rows of a bottom-up OpenGL read-back, top row first.
+// RGBA pixels of a framebuffer's colour buffer, top row first (OpenGL reads bottom-up).
 template <typename T>
-std::vector<T> flipRows(const std::vector<T>& pixels, int width, int height, int channels) {
-  std::vector<T> out(pixels.size());
-  const size_t row = size_t(width) * channels;
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&pixels[size_t(height - 1 - y) * row], row, &out[size_t(y) * row]);
-  return out;
+std::vector<T> readPixels(GLuint framebuffer, GLenum colorBuffer, int width, int height, GLenum type) {
+  std::vector<T> pixels(size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glReadBuffer(colorBuffer);
+  glReadPixels(0, 0, width, height, GL_RGBA, type, pixels.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  std::vector<T> rows(pixels.size());
+  const size_t row = size_t(width) * 4;
+  for (int y = 0; y < height; ++y) std::copy_n(&pixels[size_t(height - 1 - y) * row], row, &rows[size_t(y) * row]);
+  return rows;
 }
 
 }  // namespace
@@ -76,6 +82,8 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 }
 
 void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, int width, int height) {
+  // Errors left on this context by other code (the UI) are not this pass's to report.
+  while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
   const bool timing = frame_ >= 2;
   if (timing) {
@@ -138,29 +146,19 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   if (GLenum error = glGetError(); error != GL_NO_ERROR)
-    throw Error("OpenGL error 0x" + std::to_string(error) + " while rendering");
+    throw Error("OpenGL error " + hexCode(error) + " while rendering");
 }
 
 Image MeshRenderer::readDisplay() const {
-  Image image{targets_.width(), targets_.height(), {}};
-  std::vector<uint8_t> pixels(size_t(image.width) * image.height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glNamedFramebufferReadBuffer(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.displayFramebuffer());
-  glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  image.rgba = flipRows(pixels, image.width, image.height, 4);
-  return image;
+  return {targets_.width(), targets_.height(),
+          readPixels<uint8_t>(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(),
+                              targets_.height(), GL_UNSIGNED_BYTE)};
 }
 
 LinearImage MeshRenderer::readLinear() const {
-  LinearImage image{targets_.width(), targets_.height(), {}};
-  std::vector<float> pixels(size_t(image.width) * image.height * 4);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_.linearFramebuffer());
-  glReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, pixels.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  image.rgba = flipRows(pixels, image.width, image.height, 4);
-  return image;
+  return {targets_.width(), targets_.height(),
+          readPixels<float>(targets_.linearFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(),
+                            GL_FLOAT)};
 }
 
 void MeshRenderer::presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const {
@@ -169,14 +167,7 @@ void MeshRenderer::presentToDefaultFramebuffer(int framebufferWidth, int framebu
 }
 
 Image readDefaultFramebuffer(int width, int height) {
-  Image image{width, height, {}};
-  std::vector<uint8_t> pixels(size_t(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-  image.rgba = flipRows(pixels, width, height, 4);
-  return image;
+  return {width, height, readPixels<uint8_t>(0, GL_BACK, width, height, GL_UNSIGNED_BYTE)};
 }
 
 }  // namespace radview::gl

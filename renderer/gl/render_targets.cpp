@@ -1,6 +1,7 @@
 #include "gl/render_targets.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 
 #include <string>
 
@@ -20,8 +21,7 @@ GLuint texture(GLenum format, int width, int height) {
 void requireComplete(GLuint fbo, const char* name) {
   const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error(std::string("OpenGL: the ") + name + " framebuffer is incomplete (status 0x" +
-                std::to_string(status) + ")");
+    throw Error(std::string("OpenGL: the ") + name + " framebuffer is incomplete (status " + hexCode(status) + ")");
 }
 
 }  // namespace
@@ -34,26 +34,35 @@ void RenderTargets::release() {
   GLuint textures[] = {linearColor_, displayColor_, depth_};
   glDeleteTextures(3, textures);
   linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = 0;
+  width_ = height_ = 0;
 }
 
 void RenderTargets::resize(int width, int height) {
   if (width == width_ && height == height_ && linearFbo_) return;
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
-    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1..16384");
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
+                std::to_string(maxSize) + " (this OpenGL's largest texture)");
   release();
-  width_ = width;
-  height_ = height;
   linearColor_ = texture(GL_RGBA32F, width, height);
   displayColor_ = texture(GL_RGBA8, width, height);
   depth_ = texture(GL_DEPTH_COMPONENT32F, width, height);
   glCreateFramebuffers(1, &linearFbo_);
   glNamedFramebufferTexture(linearFbo_, GL_COLOR_ATTACHMENT0, linearColor_, 0);
   glNamedFramebufferTexture(linearFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-  requireComplete(linearFbo_, "linear");
   glCreateFramebuffers(1, &displayFbo_);
   glNamedFramebufferTexture(displayFbo_, GL_COLOR_ATTACHMENT0, displayColor_, 0);
   glNamedFramebufferTexture(displayFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-  requireComplete(displayFbo_, "display");
+  try {
+    requireComplete(linearFbo_, "linear");
+    requireComplete(displayFbo_, "display");
+  } catch (const Error&) {
+    release();  // width_ stays 0, so the next resize tries again
+    throw;
+  }
+  width_ = width;
+  height_ = height;
 }
 
 }  // namespace radview::gl

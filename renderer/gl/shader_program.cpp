@@ -1,6 +1,7 @@
 #include "gl/shader_program.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 #include "gl/embedded_shaders.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -13,18 +14,25 @@ namespace radview::gl {
 
 namespace {
 
-std::string readRaw(const std::string& name) {
+// The shader file `name` as read: its text, and the path to name in messages.
+struct ShaderFile {
+  std::string path;
+  std::string text;
+};
+
+ShaderFile readRaw(const std::string& name) {
   if (const char* dir = std::getenv("RADVIEW_SHADER_DIR")) {
-    std::ifstream in(std::string(dir) + "/" + name);
-    if (!in) throw Error(std::string(dir) + "/" + name, "shader file not found (RADVIEW_SHADER_DIR is set)");
+    const std::string path = std::string(dir) + "/" + name;
+    std::ifstream in(path);
+    if (!in) throw Error(path, "shader file not found (RADVIEW_SHADER_DIR is set)");
     std::stringstream ss;
     ss << in.rdbuf();
-    return ss.str();
+    return {path, ss.str()};
   }
   const auto& table = embeddedShaders();
   auto it = table.find(name);
   if (it == table.end()) throw Error("shaders/" + name, "no such shader embedded in this build");
-  return it->second;
+  return {"shaders/" + name, it->second};
 }
 
 GLenum stageOf(const std::string& file) {
@@ -37,16 +45,14 @@ GLenum stageOf(const std::string& file) {
   throw Error("shaders/" + file, "unknown shader stage extension");
 }
 
-}  // namespace
-
-std::string shaderSource(const std::string& name) {
-  std::istringstream in(readRaw(name));
+std::string expandIncludes(const std::string& text) {
+  std::istringstream in(text);
   std::ostringstream out;
   const std::string directive = "#include \"";
   for (std::string line; std::getline(in, line);) {
     if (line.rfind(directive, 0) == 0) {
       const std::string included = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
-      out << readRaw(included) << '\n';
+      out << readRaw(included).text << '\n';
     } else {
       out << line << '\n';
     }
@@ -54,37 +60,58 @@ std::string shaderSource(const std::string& name) {
   return out.str();
 }
 
+// The driver's log for a shader or program, on one line.
+template <typename GetLog>
+std::string log(GLuint object, GetLog getLog) {
+  char text[4096] = {};
+  getLog(object, sizeof text, nullptr, text);
+  return oneLine(text);
+}
+
+}  // namespace
+
+std::string shaderSource(const std::string& name) { return expandIncludes(readRaw(name).text); }
+
 ShaderProgram::ShaderProgram(const std::vector<std::string>& stageFiles) {
-  program_ = glCreateProgram();
-  std::vector<GLuint> shaders;
+  // Every source is read and every stage known before a GL object exists, so a missing file
+  // leaks nothing.
+  struct Stage {
+    GLenum type;
+    std::string path, source;
+  };
+  std::vector<Stage> stages;
   for (const std::string& file : stageFiles) {
-    const std::string source = shaderSource(file);
-    const char* text = source.c_str();
-    GLuint shader = glCreateShader(stageOf(file));
+    const ShaderFile raw = readRaw(file);
+    stages.push_back({stageOf(file), raw.path, expandIncludes(raw.text)});
+  }
+  std::vector<GLuint> shaders;
+  auto releaseShaders = [&] {
+    for (GLuint s : shaders) glDeleteShader(s);
+  };
+  for (const Stage& stage : stages) {
+    const GLuint shader = glCreateShader(stage.type);
+    shaders.push_back(shader);
+    const char* text = stage.source.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (!ok) {
-      char log[4096] = {};
-      glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-      glDeleteShader(shader);
-      for (GLuint s : shaders) glDeleteShader(s);
-      glDeleteProgram(program_);
-      throw Error("shaders/" + file, std::string("does not compile: ") + log);
+      const std::string why = log(shader, glGetShaderInfoLog);
+      releaseShaders();
+      throw Error(stage.path, "does not compile: " + why);
     }
-    glAttachShader(program_, shader);
-    shaders.push_back(shader);
   }
+  program_ = glCreateProgram();
+  for (GLuint s : shaders) glAttachShader(program_, s);
   glLinkProgram(program_);
-  for (GLuint s : shaders) glDeleteShader(s);
+  releaseShaders();
   GLint ok = GL_FALSE;
   glGetProgramiv(program_, GL_LINK_STATUS, &ok);
   if (!ok) {
-    char log[4096] = {};
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+    const std::string why = log(program_, glGetProgramInfoLog);
     glDeleteProgram(program_);
-    throw Error("shaders/" + stageFiles.front(), std::string("program does not link: ") + log);
+    throw Error(stages.front().path, "program does not link: " + why);
   }
 }
 

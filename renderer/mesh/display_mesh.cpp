@@ -12,11 +12,27 @@ namespace {
 
 glm::vec3 f(const Vec3& v) { return glm::vec3(v); }
 
-void addTriangle(DisplayMesh& out, const RadiosityMesh& mesh, const Rgb& Bflat, uint32_t a, uint32_t b, uint32_t c) {
-  for (uint32_t n : {a, b, c}) out.triangles.push_back({f(mesh.nodes[n].position), f(mesh.nodes[n].B), f(Bflat)});
-}
-
 }  // namespace
+
+std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh, size_t element,
+                                                      size_t firstCorner) {
+  const Element& e = mesh.elements[element];
+  const size_t n = e.corners.size();
+  if (e.order() == ElementOrder::Quadratic && n == 3) {
+    const auto& c = e.corners;
+    const auto& m = e.midEdge;  // m[i] on edge c[i] -> c[i+1]
+    return {{c[0], m[0], m[2]}, {m[0], c[1], m[1]}, {m[2], m[1], c[2]}, {m[0], m[1], m[2]}};
+  }
+  std::vector<uint32_t> corners(n);
+  std::vector<Vec3> polygon(n);
+  for (size_t i = 0; i < n; ++i) {
+    corners[i] = e.corners[(i + firstCorner) % n];
+    polygon[i] = mesh.nodes[corners[i]].position;
+  }
+  std::vector<std::array<uint32_t, 3>> out;
+  for (const auto& t : triangulatePolygon(polygon)) out.push_back({corners[t[0]], corners[t[1]], corners[t[2]]});
+  return out;
+}
 
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
   DisplayMesh out;
@@ -31,17 +47,10 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& element = mesh.elements[e];
     const Rgb Bflat = mesh.meanB(e);
+    for (const auto& t : elementTriangles(mesh, e))
+      for (uint32_t node : t) out.triangles.push_back({f(mesh.nodes[node].position), f(mesh.nodes[node].B), f(Bflat)});
     const auto& c = element.corners;
     const size_t n = c.size();
-    if (element.order() == ElementOrder::Quadratic && n == 3) {
-      const auto& m = element.midEdge;  // m[i] on edge c[i] -> c[i+1]
-      addTriangle(out, mesh, Bflat, c[0], m[0], m[2]);
-      addTriangle(out, mesh, Bflat, m[0], c[1], m[1]);
-      addTriangle(out, mesh, Bflat, m[2], m[1], c[2]);
-      addTriangle(out, mesh, Bflat, m[0], m[1], m[2]);
-    } else {
-      for (const auto& t : triangulatePolygon(mesh.cornerPositions(e))) addTriangle(out, mesh, Bflat, c[t[0]], c[t[1]], c[t[2]]);
-    }
     for (size_t i = 0; i < n; ++i) {
       if (element.order() == ElementOrder::Quadratic) {
         addEdge(c[i], element.midEdge[i]);

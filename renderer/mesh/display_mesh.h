@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 namespace radview {
@@ -27,5 +29,11 @@ struct DisplayMesh {
 // Gouraud shading passes through all six nodal values; other quadratic polygons are cut
 // over their corners only (their mid-edge values are shown by the higher-order methods).
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh);
+
+// The triangles (node indices) buildDisplayMesh draws for one element. `firstCorner` starts
+// the corner-polygon triangulation at another corner: for a quad, 0 cuts along the diagonal
+// 0-2 and 1 along 1-3 (fig. 9.7's two pictures of the same data).
+std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh, size_t element,
+                                                      size_t firstCorner = 0);
 
 }  // namespace radview

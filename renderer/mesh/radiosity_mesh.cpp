@@ -43,8 +43,6 @@ Rgb RadiosityMesh::meanB(size_t element) const {
 
 namespace {
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 template <typename... Args>
 [[noreturn]] void fail(const std::string& source, Args&&... parts) {
   std::ostringstream os;
@@ -58,11 +56,11 @@ void validateMesh(const RadiosityMesh& mesh, const std::string& source) {
   const size_t nodeCount = mesh.nodes.size();
   for (size_t i = 0; i < nodeCount; ++i) {
     const Node& n = mesh.nodes[i];
-    if (!finite(n.position)) fail(source, "node ", i, " has a non-finite position");
-    if (!finite(n.B)) fail(source, "node ", i, " has a non-finite radiosity");
+    if (!isFinite(n.position)) fail(source, "node ", i, " has a non-finite position");
+    if (!isFinite(n.B)) fail(source, "node ", i, " has a non-finite radiosity");
     if (mesh.hasGradients)
       for (const Vec3& g : n.gradient)
-        if (!finite(g)) fail(source, "node ", i, " has a non-finite radiosity gradient");
+        if (!isFinite(g)) fail(source, "node ", i, " has a non-finite radiosity gradient");
   }
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& el = mesh.elements[e];
@@ -77,6 +75,13 @@ void validateMesh(const RadiosityMesh& mesh, const std::string& source) {
     if (std::adjacent_find(all.begin(), all.end()) != all.end()) fail(source, "element ", e, " uses a node twice");
     if (el.material < 0 || el.material >= static_cast<int>(mesh.materials.size()))
       fail(source, "element ", e, " refers to material ", el.material, " of ", mesh.materials.size());
+    // Rendering and interpolation cut every element into triangles: one that cannot be cut
+    // (zero area, self-intersecting) is refused here, with the file named.
+    try {
+      triangulatePolygon(mesh.cornerPositions(e));
+    } catch (const Error& error) {
+      fail(source, "element ", e, ": ", error.what());
+    }
   }
   for (size_t d = 0; d < mesh.discontinuities.size(); ++d) {
     const DiscontinuityEdge& edge = mesh.discontinuities[d];

@@ -39,7 +39,6 @@ struct Element {
   int surface = -1;  // the scene polygon this element meshes, or -1 if unknown
 
   ElementOrder order() const { return midEdge.empty() ? ElementOrder::Linear : ElementOrder::Quadratic; }
-  size_t edgeCount() const { return corners.size(); }
 };
 
 // An element edge across which B is not C1. Nodes a and b are the edge's end nodes on one of

@@ -1,6 +1,7 @@
 #include "mesh/solution_file.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 #include "geom/polygon.h"
 
 #include <tiny_gltf.h>
@@ -27,11 +28,6 @@ const char* const kGradientAttributes[3] = {"_RADIOSITY_GRADIENT_R", "_RADIOSITY
 
 double luminance(const Rgb& B) { return 0.2126 * B.r + 0.7152 * B.g + 0.0722 * B.b; }  // Rec. 709
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 tinygltf::Value numbers(const Rgb& v) {
   return tinygltf::Value(
@@ -357,6 +353,7 @@ class SolutionReader {
     if (nodeCount > vertices)
       fail(std::string(kSolutionExtension) + ": nodeCount " + std::to_string(nodeCount) +
            " is more than the primitives store (" + std::to_string(vertices) + " vertices)");
+    if (elementCount == 0) fail(std::string(kSolutionExtension) + ": the solution has no elements");
     if (elementCount != elements)  // with each stored once (see assemble), every element is there
       fail(std::string(kSolutionExtension) + ": elementCount " + std::to_string(elementCount) +
            " differs from the primitives' total of " + std::to_string(elements));

@@ -1,6 +1,7 @@
 #include "scene/gltf_document.h"
 
 #include "core/error.h"
+#include "core/strings.h"
 
 #include <tiny_gltf.h>
 
@@ -58,23 +59,11 @@ std::vector<std::string> nonEmptyLines(const std::string& text) {
   return out;
 }
 
-std::string oneLine(const std::string& text, size_t maxLength = 300) {
-  std::string out;
-  for (const std::string& line : nonEmptyLines(text)) out += (out.empty() ? "" : "; ") + line;
-  if (out.size() > maxLength) out = out.substr(0, maxLength) + "...";
-  return out;
-}
-
 bool spurious(const std::string& errorLine) {
   return std::any_of(std::begin(kSpuriousTinygltfErrors), std::end(kSpuriousTinygltfErrors),
                      [&](const char* s) { return errorLine == s; });
 }
 
-std::string lowerExtension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 // Filesystem callbacks for tinygltf: only regular files, never larger than kMaxFileBytes. The
 // defaults open whatever a uri names. Corpus invalid/tinygltf/issue-416.gltf has an image uri
@@ -412,6 +401,7 @@ GltfDocument::GltfDocument(const std::string& path)
     : path_(path), model_(std::make_unique<tinygltf::Model>()) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) throw Error(path, ec.message());
   if (!fs::exists(status)) throw Error(path, "no such file");
   if (fs::is_directory(status)) throw Error(path, "is a directory, not a glTF file");
   if (!fs::is_regular_file(status)) throw Error(path, "is not a regular file");

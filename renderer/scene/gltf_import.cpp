@@ -16,6 +16,13 @@
 namespace radview {
 
 namespace {
+// Every triangle becomes at least one element, and meshes beyond kMaxUniformElements are
+// refused anyway; refusing at import keeps a small file with many instances from exhausting
+// memory first.
+constexpr size_t kMaxImportedTriangles = 2'000'000;
+}  // namespace
+
+namespace {
 
 using Mat4 = glm::dmat4;
 
@@ -219,7 +226,7 @@ class SceneImporter {
         doc_.readVec3(position->second, {what + " POSITION", 3, positionTypes, quantized});
     for (Vec3& p : positions) {
       p = Vec3(worldFromMesh * glm::dvec4(p, 1.0));
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      if (!isFinite(p))
         fail(what + " on node " + std::to_string(nodeIndex) + ": a transformed position is not finite");
     }
     std::vector<uint32_t> indices;
@@ -241,6 +248,9 @@ class SceneImporter {
         ++degenerateTriangles_;
         return;
       }
+      if (scene_.polygons.size() >= kMaxImportedTriangles)
+        fail("more than " + std::to_string(kMaxImportedTriangles) +
+             " triangles after instancing; radview does not mesh scenes that large");
       scene_.polygons.push_back({{pa, pb, pc}, material});
     };
     // The spec ("Meshes") gives the vertex order of each triangle of a strip and a fan.

@@ -12,8 +12,6 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 
-bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
 // Sutherland-Hodgman against one plane: keeps the part of the polygon with dot(p, n) >= 0.
 // Vertices are relative to x, so the plane passes through the origin.
 std::vector<Vec3> clipToFrontHalfSpace(const std::vector<Vec3>& R, const Vec3& n) {
@@ -39,8 +37,8 @@ std::vector<Vec3> clipToFrontHalfSpace(const std::vector<Vec3>& R, const Vec3& n
 // with R_i = v_i - x and beta_i the angle between R_i and R_{i+1}. (R_{i+1} x R_i, not
 // R_i x R_{i+1}: the emitter's vertices are CCW about its own normal, which faces x.)
 double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon) {
-  RADVIEW_CHECK(finite(x) && finite(n) && std::abs(glm::dot(n, n) - 1.0) < 1e-6);
-  RADVIEW_CHECK(std::all_of(polygon.begin(), polygon.end(), finite));
+  RADVIEW_CHECK(isFinite(x) && isFinite(n) && std::abs(glm::dot(n, n) - 1.0) < 1e-6);
+  RADVIEW_CHECK(std::all_of(polygon.begin(), polygon.end(), [](const Vec3& v) { return isFinite(v); }));
   const Vec3 N = unitNormal(polygon);
   if (N == Vec3(0.0)) return 0.0;
 

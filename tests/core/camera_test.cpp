@@ -53,6 +53,15 @@ TEST(Camera, BadSpecsAreClearErrors) {
   EXPECT_THROW(cameraFromSpec("file", unitBox(), {}), Error);
 }
 
+TEST(Camera, RollTurnsTheImageClockwise) {
+  // Looking down -z with y up: a point to the right of centre must move down on screen.
+  Camera c = cameraFromSpec("0,0,5/0,0,0/0,1,0", unitBox(), {});
+  roll(c, glm::radians(45.0));
+  const glm::dvec4 clip = c.clipFromWorld(1.0) * glm::dvec4(1.0, 0.0, 0.0, 1.0);
+  EXPECT_GT(clip.x / clip.w, 0.0);
+  EXPECT_LT(clip.y / clip.w, 0.0);
+}
+
 TEST(Camera, RollBy45DegreesEightTimesIsTheIdentity) {
   Camera c = cameraFromSpec("iso", unitBox(), {});
   const Vec3 up = c.up;

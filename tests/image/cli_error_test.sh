@@ -11,3 +11,4 @@ echo "exit $status: $stderr"
 if [ $status -eq 0 ]; then echo "FAILED: the command succeeded"; exit 1; fi
 if [ $status -ge 128 ]; then echo "FAILED: the command crashed"; exit 1; fi
 if ! grep -qE -- "$pattern" <<<"$stderr"; then echo "FAILED: stderr does not match '$pattern'"; exit 1; fi
+if [ "$(grep -c . <<<"$stderr")" -ne 1 ]; then echo "FAILED: the error is not one line"; exit 1; fi

@@ -9,9 +9,10 @@ namespace radview::test {
 
 inline Scene cornellBox() {
   Scene scene;
-  scene.materials = {{"white", {0.698, 0.736, 0.734}, {0, 0, 0}},
-                     {"red", {0.056, 0.083, 0.576}, {0, 0, 0}},
-                     {"green", {0.114, 0.351, 0.133}, {0, 0, 0}},
+  // RGB: the band means listed blue, green, red in the data file, put in R, G, B order.
+  scene.materials = {{"white", {0.734, 0.736, 0.698}, {0, 0, 0}},
+                     {"red", {0.576, 0.083, 0.056}, {0, 0, 0}},
+                     {"green", {0.133, 0.351, 0.114}, {0, 0, 0}},
                      {"light", {0.78, 0.78, 0.78}, {40, 30, 20}}};
   enum { white, red, green, light };
   auto quad = [&](int material, std::vector<Vec3> v) { scene.polygons.push_back({std::move(v), material}); };

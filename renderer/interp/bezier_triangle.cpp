@@ -1,0 +1,95 @@
+#include "interp/bezier_triangle.h"
+
+#include "core/error.h"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+namespace radview {
+
+std::ostream& operator<<(std::ostream& os, const Sample& s) {
+  return os << "B " << s.B << " grad " << s.gradient[0] << ' ' << s.gradient[1] << ' ' << s.gradient[2];
+}
+
+namespace {
+
+// The vertex opposite the longest edge, and that edge's squared length.
+std::pair<int, double> longestEdgeApex(const std::array<Vec3, 3>& V) {
+  int apex = 0;
+  double longest2 = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 e = V[(i + 2) % 3] - V[(i + 1) % 3];
+    if (glm::dot(e, e) > longest2) {
+      apex = i;
+      longest2 = glm::dot(e, e);
+    }
+  }
+  return {apex, longest2};
+}
+
+}  // namespace
+
+BarycentricFrame barycentricFrame(const std::array<Vec3, 3>& V) {
+  BarycentricFrame frame;
+  frame.V = V;
+  const auto [apex, longest2] = longestEdgeApex(V);
+  const Vec3 N = glm::cross(V[(apex + 1) % 3] - V[apex], V[(apex + 2) % 3] - V[apex]);
+  const double N2 = glm::dot(N, N);
+  const double threshold = 16.0 * std::numeric_limits<double>::epsilon() * longest2;
+  frame.degenerate = !(N2 > threshold * threshold);
+  if (frame.degenerate) return frame;
+  for (int i = 0; i < 3; ++i) frame.grad[i] = glm::cross(N, V[(i + 2) % 3] - V[(i + 1) % 3]) / N2;
+  return frame;
+}
+
+Vec3 BarycentricFrame::operator()(const Vec3& x) const {
+  if (degenerate) {
+    // Linear along the longest edge A -> B, the third vertex (between them, or coincident)
+    // gets nothing.
+    const auto [apex, longest2] = longestEdgeApex(V);
+    if (!(longest2 > 0.0)) return Vec3(1.0 / 3.0);
+    const int a = (apex + 1) % 3, b = (apex + 2) % 3;
+    const double t = std::clamp(glm::dot(x - V[a], V[b] - V[a]) / longest2, 0.0, 1.0);
+    Vec3 lambda(0.0);
+    lambda[a] = 1.0 - t;
+    lambda[b] = t;
+    return lambda;
+  }
+  const Vec3 lambda(glm::dot(grad[0], x - V[1]), glm::dot(grad[1], x - V[2]), glm::dot(grad[2], x - V[0]));
+  // The sum is 1 up to round-off; dividing makes the coordinates affine to the last bit, so a
+  // polynomial patch (homogeneous in lambda) is not scaled by (sum)^n.
+  return lambda / (lambda.x + lambda.y + lambda.z);
+}
+
+// C&W eq. 9.7 by de Casteljau: n - 1 rounds of b^(m-1)_ijk = bu b^m_(i+1)jk + bv b^m_i(j+1)k +
+// bw b^m_ij(k+1) leave the degree-1 net a_100, a_010, a_001; then B = beta . a and
+// dB/dbeta_i = n a_i (the derivative of a Bernstein polynomial is n times the difference net,
+// and the remaining rounds commute with taking it).
+BezierJet evaluateBezier(int n, const Rgb* b, const Vec3& beta) {
+  RADVIEW_CHECK(n >= 1 && n <= 3);
+  std::array<Rgb, 10> net{};
+  std::copy(b, b + (n + 1) * (n + 2) / 2, net.begin());
+  for (int m = n; m > 1; --m) {
+    std::array<Rgb, 10> next{};
+    for (int i = m - 1; i >= 0; --i)
+      for (int j = m - 1 - i; j >= 0; --j)
+        next[bezierIndex(m - 1, i, j)] = beta.x * net[bezierIndex(m, i + 1, j)] +
+                                         beta.y * net[bezierIndex(m, i, j + 1)] + beta.z * net[bezierIndex(m, i, j)];
+    net = next;
+  }
+  BezierJet jet;
+  jet.B = beta.x * net[0] + beta.y * net[1] + beta.z * net[2];
+  for (int i = 0; i < 3; ++i) jet.dBeta[i] = double(n) * net[i];
+  return jet;
+}
+
+Sample toWorld(const BezierJet& jet, const std::array<Vec3, 3>& gradBeta) {
+  Sample s;
+  s.B = jet.B;
+  for (int c = 0; c < 3; ++c)
+    s.gradient[c] = jet.dBeta[0][c] * gradBeta[0] + jet.dBeta[1][c] * gradBeta[1] + jet.dBeta[2][c] * gradBeta[2];
+  return s;
+}
+
+}  // namespace radview

@@ -1,0 +1,61 @@
+#pragma once
+// Reconstruction of the radiosity function B(x) from nodal values (C&W §9.2): one interface
+// for every method, built once from a mesh, evaluated at points of an element. This is the
+// CPU reference the GPU paths are checked against, so it works in double precision.
+#include "mesh/radiosity_mesh.h"
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace radview {
+
+// B and its surface gradient at a point. gradient[c] is the world-space gradient of channel
+// c, a vector in the element's plane.
+struct Sample {
+  Rgb B{0.0};
+  std::array<Vec3, 3> gradient{};
+};
+
+enum class Method {
+  Flat,          // the element's mean nodal value
+  Linear,        // barycentric on a triangulation of each element (for quads: one diagonal)
+  Bilinear,      // quads in their bilinear parameter space (orientation invariant)
+  Quadratic,     // Lagrange on quadratic elements (vertex and mid-edge nodes), C0
+  C1Quadratic,   // Powell-Sabin split, quadratic Bezier pieces (Reichert), C1
+  CloughTocher,  // three cubic Bezier pieces per triangle (C&W §9.2.2), C1 with relaxations
+};
+const std::vector<std::string>& methodNames();  // "flat", "linear", ... in enum order
+Method methodFromName(const std::string& name);  // throws Error
+
+// Which diagonal cuts a quad for Method::Linear: corners 0-2 (what radview's GPU Gouraud path
+// draws) or 1-3. Fig. 9.7: the two give different pictures from the same data.
+enum class QuadDiagonal { D02, D13 };
+
+// Cross-boundary direction of the Clough-Tocher edge wedge (C&W step 3).
+enum class CloughTocherVariant {
+  AffineInvariant,  // centroid to neighbour centroid (scipy's CloughTocher2DInterpolator)
+  Book,             // the edge normal, as the text reads
+};
+
+struct InterpolantOptions {
+  QuadDiagonal diagonal = QuadDiagonal::D02;
+  CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
+  // Use the gradients stored in the mesh when it has them (else they are estimated).
+  bool useStoredGradients = true;
+};
+
+class Interpolant {
+ public:
+  virtual ~Interpolant() = default;
+  // B at `x`, a world-space point of element `element` (points off its plane are projected
+  // onto it; points outside it are extrapolated from the nearest piece).
+  virtual Sample evaluate(uint32_t element, const Vec3& x) const = 0;
+};
+
+// The mesh must outlive the interpolant. Throws Error for a method the mesh cannot support.
+std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method method,
+                                             const InterpolantOptions& options = {});
+
+}  // namespace radview

@@ -1,0 +1,174 @@
+#include "interp/surface_triangulation.h"
+
+#include "core/error.h"
+#include "geom/polygon.h"
+#include "geom/triangulate_cgal.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace radview {
+
+Vec3 barycentricCoordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
+  const Vec3 n = glm::cross(b - a, c - a);
+  const double twiceArea2 = glm::dot(n, n);
+  if (!(twiceArea2 > 0.0)) return Vec3(1.0 / 3.0);
+  // Each coordinate from the edge opposite its vertex, so a sliver's short edge does not
+  // cancel against a long one.
+  const double u = glm::dot(glm::cross(c - b, p - b), n) / twiceArea2;
+  const double v = glm::dot(glm::cross(a - c, p - c), n) / twiceArea2;
+  const double w = glm::dot(glm::cross(b - a, p - a), n) / twiceArea2;
+  // u + v + w is 1 up to round-off; renormalise so the coordinates are affine exactly.
+  const double sum = u + v + w;
+  return sum != 0.0 ? Vec3(u, v, w) / sum : Vec3(1.0 / 3.0);
+}
+
+namespace {
+
+bool lexicographicallyLess(const Vec3& a, const Vec3& b) {
+  if (a.x != b.x) return a.x < b.x;
+  if (a.y != b.y) return a.y < b.y;
+  return a.z < b.z;
+}
+
+// A corner of an element's boundary after T-vertex insertion: its node, and the element edge
+// the boundary segment starting at it belongs to.
+struct BoundaryVertex {
+  uint32_t node;
+  uint32_t elementEdge;
+};
+
+std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
+                                                  uint32_t element) {
+  const Element& e = mesh.elements[element];
+  std::vector<std::vector<std::pair<double, uint32_t>>> inserted(e.corners.size());
+  if (e.order() == ElementOrder::Linear)
+    for (const TVertex& t : topology.tVertices())
+      if (t.element == element) inserted[t.edge].push_back({t.t, t.node});
+  std::vector<BoundaryVertex> boundary;
+  for (uint32_t k = 0; k < e.corners.size(); ++k) {
+    boundary.push_back({e.corners[k], k});
+    std::sort(inserted[k].begin(), inserted[k].end());
+    for (const auto& [t, node] : inserted[k]) boundary.push_back({node, k});
+  }
+  return boundary;
+}
+
+// Triangles of a simple polygon, as indices into it: orientation-independent (see header).
+std::vector<std::array<int, 3>> delaunayTriangles(const std::vector<Vec3>& polygon) {
+  if (polygon.size() == 3) return {{0, 1, 2}};
+  const PlaneFrame frame = planeFrame(polygon);
+  const size_t n = polygon.size();
+  size_t start = 0;
+  for (size_t i = 1; i < n; ++i)
+    if (lexicographicallyLess(polygon[i], polygon[start])) start = i;
+  std::vector<Vec2> flat(n);
+  for (size_t i = 0; i < n; ++i) flat[i] = frame.project(polygon[(start + i) % n]);
+  std::vector<std::array<int, 3>> triangles = constrainedDelaunayTriangulation(flat);
+  for (auto& t : triangles)
+    for (int& v : t) v = static_cast<int>((v + start) % n);
+  return triangles;
+}
+
+}  // namespace
+
+SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh)
+    : mesh_(mesh), topology_(mesh), byElement_(mesh.elements.size()) {
+  // Which element edge each triangle edge lies on (-1: a diagonal inside the element).
+  std::vector<std::array<int64_t, 3>> onElementEdge;
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    const std::vector<BoundaryVertex> boundary = boundaryWithTVertices(mesh, topology_, e);
+    std::vector<Vec3> polygon;
+    for (const BoundaryVertex& v : boundary) polygon.push_back(mesh.nodes[v.node].position);
+    const size_t n = boundary.size();
+    for (const auto& t : delaunayTriangles(polygon)) {
+      SurfaceTriangle triangle;
+      triangle.element = e;
+      std::array<int64_t, 3> edges{};
+      for (int k = 0; k < 3; ++k) {
+        triangle.node[k] = boundary[t[k]].node;
+        const bool boundarySegment = size_t(t[(k + 1) % 3]) == (size_t(t[k]) + 1) % n;
+        edges[k] = boundarySegment ? int64_t(boundary[t[k]].elementEdge) : -1;
+      }
+      byElement_[e].push_back(static_cast<uint32_t>(triangles_.size()));
+      triangles_.push_back(triangle);
+      onElementEdge.push_back(edges);
+    }
+  }
+
+  // Neighbours: triangle edges matched through position ids (so the two sides of a C-1 edge,
+  // which have distinct nodes, still meet), kept only between triangles of one plane.
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, int>>> byEdge;
+  for (uint32_t t = 0; t < triangles_.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t a = topology_.positionId(triangles_[t].node[k]);
+      const uint32_t b = topology_.positionId(triangles_[t].node[(k + 1) % 3]);
+      byEdge[{std::min(a, b), std::max(a, b)}].push_back({t, k});
+    }
+  for (const auto& [key, sides] : byEdge) {
+    if (sides.size() != 2) continue;
+    const auto [t0, k0] = sides[0];
+    const auto [t1, k1] = sides[1];
+    const auto p0 = positions(t0);
+    const double size = glm::length(p0[1] - p0[0]) + glm::length(p0[2] - p0[1]);
+    const Vec3 n0 = normal(t0);
+    const bool samePlane = glm::dot(n0, normal(t1)) > 1.0 - 1e-9 &&
+                           std::abs(glm::dot(positions(t1)[(k1 + 2) % 3] - p0[0], n0)) <= 1e-9 * size;
+    if (!samePlane) continue;
+    SurfaceTriangle& A = triangles_[t0];
+    SurfaceTriangle& B = triangles_[t1];
+    A.neighbour[k0] = t1;
+    B.neighbour[k1] = t0;
+    // Edge k0 of A runs a -> b; the same edge of B runs b -> a.
+    const bool sameNodes = A.node[k0] == B.node[(k1 + 1) % 3] && A.node[(k0 + 1) % 3] == B.node[k1];
+    Continuity order = sameNodes ? Continuity::C1 : Continuity::Cm1;
+    for (const auto& [t, k] : sides) {
+      const int64_t elementEdge = onElementEdge[t][k];
+      if (elementEdge >= 0) {
+        const Continuity tagged =
+            topology_.edges()[topology_.edgeIndex(triangles_[t].element, uint32_t(elementEdge))].continuity;
+        order = std::min(order, tagged);
+      }
+    }
+    A.continuity[k0] = B.continuity[k1] = order;
+  }
+}
+
+std::array<Vec3, 3> SurfaceTriangulation::positions(uint32_t triangle) const {
+  const auto& n = triangles_[triangle].node;
+  return {mesh_.nodes[n[0]].position, mesh_.nodes[n[1]].position, mesh_.nodes[n[2]].position};
+}
+
+Vec3 SurfaceTriangulation::normal(uint32_t triangle) const {
+  const auto p = positions(triangle);
+  const Vec3 n = glm::cross(p[1] - p[0], p[2] - p[0]);
+  const double length = glm::length(n);
+  return length > 0.0 ? n / length : Vec3(0.0);
+}
+
+int SurfaceTriangulation::cornerAt(uint32_t triangle, uint32_t node) const {
+  const uint32_t wanted = topology_.positionId(node);
+  for (int k = 0; k < 3; ++k)
+    if (topology_.positionId(triangles_[triangle].node[k]) == wanted) return k;
+  return -1;
+}
+
+SurfaceTriangulation::Location SurfaceTriangulation::locate(uint32_t element, const Vec3& x) const {
+  Location best;
+  double bestInside = -std::numeric_limits<double>::infinity();
+  for (uint32_t t : byElement_[element]) {
+    const auto p = positions(t);
+    const Vec3 w = barycentricCoordinates(p[0], p[1], p[2], x);
+    const double inside = std::min(w.x, std::min(w.y, w.z));
+    if (inside > bestInside) {
+      bestInside = inside;
+      best = {t, w};
+    }
+  }
+  return best;
+}
+
+}  // namespace radview

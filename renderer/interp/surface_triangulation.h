@@ -1,0 +1,68 @@
+#pragma once
+// The triangle mesh on which the C1 interpolants are built (C&W §9.2.2 constructs them on
+// triangles): every element cut into triangles, with each triangle's neighbours across its
+// edges and the continuity B must have there.
+//
+// How elements are cut, so that the result does not depend on the view or on how the file
+// numbers the corners:
+//  - nodes of neighbours that lie on an element's edge (T-vertices, C&W §9.2) are first
+//    inserted into that element's boundary, so the triangles meet edge to edge (Baum et al.);
+//  - the polygon is then triangulated without new vertices by a constrained Delaunay
+//    triangulation (for a convex quad: the diagonal that maximises the smallest angle),
+//    started from the corner with the smallest (x, y, z), so ties (a square) are broken by
+//    position, not numbering.
+// Quadratic elements are cut over their corners only, without T-vertex insertion.
+#include "core/types.h"
+#include "mesh/radiosity_mesh.h"
+#include "mesh/topology.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace radview {
+
+struct SurfaceTriangle {
+  std::array<uint32_t, 3> node{};  // counter-clockwise about the element's normal
+  uint32_t element = 0;
+  // Edge k runs node[k] -> node[k+1]. The triangle across it, in the same plane, or -1 (a
+  // boundary, or a crease between two planes: B need not be smooth across either).
+  std::array<int64_t, 3> neighbour{-1, -1, -1};
+  // Across edge k: C1 inside an element and across untagged edges; the tagged order on a
+  // discontinuity edge; C-1 where the two sides have different nodes (their values may
+  // differ). Meaningless where neighbour is -1.
+  std::array<Continuity, 3> continuity{Continuity::C1, Continuity::C1, Continuity::C1};
+};
+
+class SurfaceTriangulation {
+ public:
+  explicit SurfaceTriangulation(const RadiosityMesh& mesh);
+
+  const RadiosityMesh& mesh() const { return mesh_; }
+  const MeshTopology& topology() const { return topology_; }
+  const std::vector<SurfaceTriangle>& triangles() const { return triangles_; }
+  const std::vector<uint32_t>& trianglesOf(uint32_t element) const { return byElement_[element]; }
+  std::array<Vec3, 3> positions(uint32_t triangle) const;
+  Vec3 normal(uint32_t triangle) const;  // unit
+  // Index (0..2) of the corner of `triangle` at the position of node `node`, or -1.
+  int cornerAt(uint32_t triangle, uint32_t node) const;
+
+  struct Location {
+    uint32_t triangle = 0;
+    Vec3 barycentric{1.0, 0.0, 0.0};  // of x projected onto the triangle's plane
+  };
+  // The triangle of `element` that contains x (the least-outside one if none does).
+  Location locate(uint32_t element, const Vec3& x) const;
+
+ private:
+  const RadiosityMesh& mesh_;
+  MeshTopology topology_;
+  std::vector<SurfaceTriangle> triangles_;
+  std::vector<std::vector<uint32_t>> byElement_;
+};
+
+// Barycentric coordinates of p projected onto the plane of triangle (a, b, c): signed
+// areas of the sub-triangles against the triangle's normal. Zero-area triangle: (1/3, 1/3, 1/3).
+Vec3 barycentricCoordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p);
+
+}  // namespace radview

@@ -1,0 +1,210 @@
+#include "interp/vertex_gradients.h"
+
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace radview {
+
+namespace {
+
+using Gradient = std::array<Vec3, 3>;  // per channel
+
+// Union-find over triangle corners (3 t + k).
+struct Sectors {
+  std::vector<uint32_t> parent;
+  explicit Sectors(size_t corners) : parent(corners) { std::iota(parent.begin(), parent.end(), 0u); }
+  uint32_t find(uint32_t c) {
+    while (parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  }
+  void join(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
+};
+
+// Two unit vectors spanning the plane with unit normal n.
+std::pair<Vec3, Vec3> planeBasis(const Vec3& n) {
+  const Vec3 helper = std::abs(n.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
+  const Vec3 u = glm::normalize(glm::cross(n, helper));
+  return {u, glm::cross(n, u)};
+}
+
+// Minimum-norm solution of the 2x2 symmetric system M g = r (per channel), treating
+// eigenvalues below 1e-12 of the largest as zero: a rank-deficient stencil fixes only the
+// components it sees.
+std::array<Vec2, 3> solveSymmetric2(double a, double b, double d, const std::array<Vec2, 3>& r) {
+  std::array<Vec2, 3> out{};
+  const double trace = a + d, det = a * d - b * b;
+  const double disc = std::sqrt(std::max(0.0, 0.25 * trace * trace - det));
+  const double l1 = 0.5 * trace + disc, l2 = 0.5 * trace - disc;  // l1 >= l2 >= 0
+  if (!(l1 > 0.0)) return out;
+  // Eigenvector of l1.
+  Vec2 e1 = std::abs(b) > 1e-300 ? Vec2(l1 - d, b) : (a >= d ? Vec2(1, 0) : Vec2(0, 1));
+  e1 = glm::normalize(e1);
+  const Vec2 e2(-e1.y, e1.x);
+  for (int c = 0; c < 3; ++c) {
+    Vec2 g = glm::dot(e1, r[c]) / l1 * e1;
+    if (l2 > 1e-12 * l1) g += glm::dot(e2, r[c]) / l2 * e2;
+    out[c] = g;
+  }
+  return out;
+}
+
+// The least-squares plane through (x0, f0) and the given neighbours, in the plane of n.
+Gradient leastSquaresGradient(const Vec3& x0, const Rgb& f0, const std::vector<std::pair<Vec3, Rgb>>& neighbours,
+                              const Vec3& n) {
+  const auto [u, v] = planeBasis(n);
+  // Scale the stencil to unit size so the rank threshold is relative to geometry, not units.
+  double scale = 0.0;
+  for (const auto& [x, f] : neighbours) scale = std::max(scale, glm::length(x - x0));
+  Gradient g{};
+  if (!(scale > 0.0)) return g;
+  double a = 0, b = 0, d = 0;
+  std::array<Vec2, 3> r{};
+  for (const auto& [x, f] : neighbours) {
+    const Vec2 p(glm::dot(x - x0, u) / scale, glm::dot(x - x0, v) / scale);
+    a += p.x * p.x;
+    b += p.x * p.y;
+    d += p.y * p.y;
+    for (int c = 0; c < 3; ++c) r[c] += p * (f[c] - f0[c]);
+  }
+  const std::array<Vec2, 3> g2 = solveSymmetric2(a, b, d, r);
+  for (int c = 0; c < 3; ++c) g[c] = (g2[c].x * u + g2[c].y * v) / scale;
+  return g;
+}
+
+// Gradient of the element's quadratic at corner k from the parabolas along its two edges at
+// that corner (fig. 9.10): slope along an edge from f(0), f(1/2), f(1): -3 f0 + 4 fm - f1.
+Gradient parabolaGradient(const RadiosityMesh& mesh, const Element& e, size_t k, const Vec3& n) {
+  const size_t count = e.corners.size();
+  const Vec3 x0 = mesh.nodes[e.corners[k]].position;
+  const Rgb f0 = mesh.nodes[e.corners[k]].B;
+  const size_t next = (k + 1) % count, previous = (k + count - 1) % count;
+  const Vec3 t1 = mesh.nodes[e.corners[next]].position - x0;
+  const Vec3 t2 = mesh.nodes[e.corners[previous]].position - x0;
+  const Rgb s1 = -3.0 * f0 + 4.0 * mesh.nodes[e.midEdge[k]].B - mesh.nodes[e.corners[next]].B;
+  const Rgb s2 = -3.0 * f0 + 4.0 * mesh.nodes[e.midEdge[previous]].B - mesh.nodes[e.corners[previous]].B;
+  // g . t1 = s1, g . t2 = s2, g in the plane: a least-squares solve handles collinear edges.
+  return leastSquaresGradient(x0, f0, {{x0 + t1, f0 + s1}, {x0 + t2, f0 + s2}}, n);
+}
+
+Vec3 project(const Vec3& g, const Vec3& n) { return g - glm::dot(g, n) * n; }
+
+}  // namespace
+
+CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useStored) {
+  const RadiosityMesh& mesh = surface.mesh();
+  const auto& triangles = surface.triangles();
+  CornerGradients out(triangles.size());
+  if (useStored && mesh.hasGradients) {
+    for (uint32_t t = 0; t < triangles.size(); ++t) {
+      const Vec3 n = surface.normal(t);
+      for (int k = 0; k < 3; ++k)
+        for (int c = 0; c < 3; ++c) out[t][k][c] = project(mesh.nodes[triangles[t].node[k]].gradient[c], n);
+    }
+    return out;
+  }
+
+  // Sectors: corners at one vertex joined across C1 edges.
+  Sectors sectors(3 * triangles.size());
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int64_t u = triangles[t].neighbour[k];
+      if (u < 0 || triangles[t].continuity[k] != Continuity::C1) continue;
+      for (int end = 0; end < 2; ++end) {
+        const int corner = (k + end) % 3;
+        const int other = surface.cornerAt(uint32_t(u), triangles[t].node[corner]);
+        if (other >= 0) sectors.join(3 * t + corner, 3 * uint32_t(u) + other);
+      }
+    }
+  std::map<uint32_t, std::vector<uint32_t>> members;
+  for (uint32_t c = 0; c < 3 * triangles.size(); ++c) members[sectors.find(c)].push_back(c);
+
+  std::map<uint32_t, Gradient> sectorGradient;
+  for (const auto& [root, corners] : members) {
+    const uint32_t t0 = corners.front() / 3;
+    const uint32_t node = triangles[t0].node[corners.front() % 3];
+    const Vec3 n = surface.normal(t0);
+    const Vec3 x0 = mesh.nodes[node].position;
+    std::set<uint32_t> elements;
+    for (uint32_t c : corners) elements.insert(triangles[c / 3].element);
+    bool allQuadratic = true;
+    for (uint32_t e : elements) allQuadratic &= mesh.elements[e].order() == ElementOrder::Quadratic;
+    Gradient g{};
+    if (allQuadratic) {
+      int used = 0;
+      for (uint32_t e : elements) {
+        const Element& element = mesh.elements[e];
+        for (size_t k = 0; k < element.corners.size(); ++k)
+          if (element.corners[k] == node) {
+            const Gradient ge = parabolaGradient(mesh, element, k, n);
+            for (int c = 0; c < 3; ++c) g[c] += ge[c];
+            ++used;
+          }
+      }
+      for (int c = 0; c < 3; ++c) g[c] /= std::max(used, 1);
+    } else {
+      std::set<uint32_t> seen{node};
+      std::vector<std::pair<Vec3, Rgb>> neighbours;
+      for (uint32_t c : corners)
+        for (uint32_t m : triangles[c / 3].node)
+          if (seen.insert(m).second) neighbours.push_back({mesh.nodes[m].position, mesh.nodes[m].B});
+      g = leastSquaresGradient(x0, mesh.nodes[node].B, neighbours, n);
+    }
+    sectorGradient[root] = g;
+  }
+
+  // C0 edges: the sectors on either side agree along the edge.
+  struct Constraint {
+    Vec3 t;  // unit edge direction
+    Rgb slope;
+  };
+  std::map<uint32_t, std::vector<Constraint>> constraints;
+  std::set<std::pair<uint32_t, uint32_t>> done;  // (sector, sector) pairs per edge end
+  for (uint32_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int64_t u = triangles[t].neighbour[k];
+      if (u < 0 || triangles[t].continuity[k] != Continuity::C0) continue;
+      const auto p = surface.positions(t);
+      const Vec3 edge = glm::normalize(p[(k + 1) % 3] - p[k]);
+      for (int end = 0; end < 2; ++end) {
+        const int corner = (k + end) % 3;
+        const int other = surface.cornerAt(uint32_t(u), triangles[t].node[corner]);
+        if (other < 0) continue;
+        const uint32_t a = sectors.find(3 * t + corner), b = sectors.find(3 * uint32_t(u) + other);
+        if (a == b || !done.insert({std::min(a, b), std::max(a, b)}).second) continue;
+        Rgb slope;
+        for (int c = 0; c < 3; ++c)
+          slope[c] = 0.5 * (glm::dot(sectorGradient[a][c], edge) + glm::dot(sectorGradient[b][c], edge));
+        constraints[a].push_back({edge, slope});
+        constraints[b].push_back({edge, slope});
+      }
+    }
+  for (auto& [sector, list] : constraints) {
+    Gradient& g = sectorGradient[sector];
+    const Constraint& first = list[0];
+    // A second constraint along a different direction: both are met exactly (2 equations, 2
+    // unknowns in the plane); along the same direction, it is the same constraint.
+    const Constraint* second = nullptr;
+    for (size_t i = 1; i < list.size() && !second; ++i)
+      if (glm::length(glm::cross(list[i].t, first.t)) > 1e-6) second = &list[i];
+    for (int c = 0; c < 3; ++c) {
+      if (!second) {
+        g[c] += (first.slope[c] - glm::dot(g[c], first.t)) * first.t;
+        continue;
+      }
+      // g = alpha t1 + beta t2 + (the out-of-span part, zero in the plane).
+      const double t12 = glm::dot(first.t, second->t);
+      const double det = 1.0 - t12 * t12;
+      const double alpha = (first.slope[c] - t12 * second->slope[c]) / det;
+      const double beta = (second->slope[c] - t12 * first.slope[c]) / det;
+      g[c] = alpha * first.t + beta * second->t;
+    }
+  }
+
+  for (const auto& [root, corners] : members)
+    for (uint32_t c : corners) out[c / 3][c % 3] = sectorGradient[root];
+  return out;
+}
+
+}  // namespace radview
