@@ -103,11 +103,8 @@ int runSample(const SampleOptions& options) {
   const RadiosityMesh& mesh = viewed.mesh;
   const std::vector<PointRequest> requests = parsePoints(options.points, mesh.elements.size());
   const double maxDistance = options.maxDistance >= 0.0 ? options.maxDistance : 1e-3 * mesh.bounds().diagonal();
-  const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
-
-  std::printf("# radview sample %s --method %s: element x y z distance B_r B_g B_b "
-              "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
-              options.file.c_str(), options.method.c_str());
+  // Every point is placed before anything is printed, so a bad one leaves no partial output.
+  std::vector<SurfacePoint> points;
   for (const PointRequest& request : requests) {
     SurfacePoint point;
     if (request.byElement) {
@@ -120,6 +117,14 @@ int runSample(const SampleOptions& options) {
                     std::to_string(point.element) + ") is " + std::to_string(point.distance) +
                     " away, more than --max-distance " + std::to_string(maxDistance));
     }
+    points.push_back(point);
+  }
+  const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
+
+  std::printf("# radview sample %s --method %s: element x y z distance B_r B_g B_b "
+              "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
+              options.file.c_str(), options.method.c_str());
+  for (const SurfacePoint& point : points) {
     const Sample s = interpolant->evaluate(point.element, point.x);
     std::printf("%u %.17g %.17g %.17g %.17g %.17g %.17g %.17g", point.element, point.x.x, point.x.y, point.x.z,
                 point.distance, s.B.r, s.B.g, s.B.b);

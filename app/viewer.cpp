@@ -80,7 +80,7 @@ void handleDrag(GLFWwindow* window, Input& input) {
   input.lastY = y;
 }
 
-void show(ViewerState& state, ViewedFile viewed) {
+void adoptViewedFile(ViewerState& state, ViewedFile viewed) {
   state.viewed = std::move(viewed);
   const std::string& path = state.viewed.file.path;
   state.homeCamera = cameraFromSpec("", state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
@@ -161,7 +161,7 @@ int runViewer(const ViewerOptions& options) {
   state.settings.elementEdges = options.display.edges;
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
-  show(state, std::move(viewed));
+  adoptViewedFile(state, std::move(viewed));
   if (!options.display.camera.empty())
     state.camera = state.homeCamera =
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
@@ -196,7 +196,7 @@ int runViewer(const ViewerOptions& options) {
       try {
         ViewedFile next = openForViewing(path, options.display.elementSize);
         renderer.setMesh(next.mesh);
-        show(state, std::move(next));
+        adoptViewedFile(state, std::move(next));
       } catch (const std::exception& e) {
         state.status = e.what();
       }

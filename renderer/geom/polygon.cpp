@@ -1,5 +1,7 @@
 #include "geom/polygon.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include "core/error.h"
 #include "geom/triangulate_cgal.h"
 
@@ -12,7 +14,6 @@ namespace radview {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3 vertexMean(const std::vector<Vec3>& vertices) {
   Vec3 sum(0.0);
@@ -51,7 +52,7 @@ double minTurnSineIfConvex(const std::vector<Vec3>& vertices) {
     minSine = std::min(minSine, sine);
     totalTurn += std::atan2(sine, cosine);
   }
-  return totalTurn < 3.0 * kPi ? minSine : notConvex;  // a simple convex boundary turns 2 pi
+  return totalTurn < 3.0 * glm::pi<double>() ? minSine : notConvex;  // a simple convex boundary turns 2 pi
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
 // Welding: grouping points that lie within a distance of each other, without comparing all
-// pairs (a hash grid with cells the size of the distance).
+// pairs (a hash grid with cells twice the distance).
 #include "core/types.h"
 
 #include <cstdint>

@@ -87,15 +87,19 @@ CloughTocherPatch buildCloughTocher(const std::array<Vec3, 3>& V, const std::arr
   return P;
 }
 
-Sample evaluate(const CloughTocherPatch& patch, const Vec3& lambda) {
-  // The point is in piece k = (V_k, V_k1, C) where lambda_o (o = k + 2) is the smallest: with
-  // V_o = 3 C - V_k - V_k1 its coordinates there are (lambda_k - lambda_o, lambda_k1 -
-  // lambda_o, 3 lambda_o), all >= 0 exactly then.
-  const int o = lambda.x <= lambda.y ? (lambda.x <= lambda.z ? 0 : 2) : (lambda.y <= lambda.z ? 1 : 2);
-  const int k = (o + 1) % 3, k1 = (o + 2) % 3;
+Sample evaluatePiece(const CloughTocherPatch& patch, int k, const Vec3& lambda) {
+  // With V_o = 3 C - V_k - V_k1 (o = k + 2), piece k's barycentric coordinates are
+  // sigma = (lambda_k - lambda_o, lambda_k1 - lambda_o, 3 lambda_o).
+  const int k1 = (k + 1) % 3, o = (k + 2) % 3;
   const Vec3 sigma(lambda[k] - lambda[o], lambda[k1] - lambda[o], 3.0 * lambda[o]);
   const std::array<Vec3, 3>& gl = patch.frame.grad;
   return toWorld(evaluateBezier(patch.control[k], sigma), {gl[k] - gl[o], gl[k1] - gl[o], 3.0 * gl[o]});
+}
+
+Sample evaluate(const CloughTocherPatch& patch, const Vec3& lambda) {
+  // Piece k's sigma are all >= 0 exactly where lambda_o is the smallest.
+  const int o = lambda.x <= lambda.y ? (lambda.x <= lambda.z ? 0 : 2) : (lambda.y <= lambda.z ? 1 : 2);
+  return evaluatePiece(patch, (o + 1) % 3, lambda);
 }
 
 Vec3 bookCrossDirection(const Vec3& V_k, const Vec3& V_k1, const Vec3& C) {

@@ -48,6 +48,8 @@ CloughTocherPatch buildCloughTocher(const std::array<Vec3, 3>& V, const std::arr
 // piece that contains the point (on an inner edge either piece; they agree). Points slightly
 // outside are extrapolated from the piece of the nearest outer edge.
 Sample evaluate(const CloughTocherPatch& patch, const Vec3& lambda);
+// Piece k's polynomial, extended beyond the piece, at lambda (what evaluate uses inside it).
+Sample evaluatePiece(const CloughTocherPatch& patch, int k, const Vec3& lambda);
 
 // The two standard choices of d_k.
 // The book's: the edge's unit normal in the plane of (V_k, V_k1, C), pointing into the

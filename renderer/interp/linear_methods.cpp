@@ -1,9 +1,9 @@
 // The C0 and C-1 methods that need nothing beyond the element itself: flat, linear
 // (barycentric on a triangulation of the element) and bilinear quads.
+#include "interp/bezier_triangle.h"
 #include "interp/bilinear_map.h"
 #include "interp/linear_triangle.h"
 #include "interp/methods.h"
-#include "interp/surface_triangulation.h"
 #include "mesh/display_mesh.h"
 
 #include <limits>
@@ -35,7 +35,7 @@ class Linear : public Interpolant {
     const std::array<uint32_t, 3>* best = nullptr;
     double bestInside = -std::numeric_limits<double>::infinity();
     for (const auto& t : triangles_[element]) {
-      const Vec3 w = barycentricCoordinates(position(t[0]), position(t[1]), position(t[2]), x);
+      const Vec3 w = barycentricFrame({position(t[0]), position(t[1]), position(t[2])})(x);
       const double inside = std::min(w.x, std::min(w.y, w.z));
       if (inside > bestInside) {
         bestInside = inside;

@@ -116,29 +116,57 @@ PowellSabinPatch buildPowellSabin(const std::array<Vec3, 3>& V, const std::array
   return P;
 }
 
-Sample evaluate(const PowellSabinPatch& patch, const Vec3& lambda) {
-  // The fan triangle (V_k, V_k1, Z) holding the point is the one where mu = lambda_o / zeta_o
-  // (o = k + 2) is the smallest: with V_o = (Z - zeta_k V_k - zeta_k1 V_k1) / zeta_o the
-  // point's coordinates there are (a, b, mu), a = lambda_k - mu zeta_k, b = lambda_k1 - mu
-  // zeta_k1, all >= 0 exactly then.
-  const Vec3 ratio = lambda / patch.zeta;
-  const int o = ratio.x <= ratio.y ? (ratio.x <= ratio.z ? 0 : 2) : (ratio.y <= ratio.z ? 1 : 2);
-  const int k = (o + 1) % 3, k1 = (o + 2) % 3;
+namespace {
+
+// The point's coordinates (a, b, mu) in the fan triangle (V_k, V_k1, Z), from V_o = (Z -
+// zeta_k V_k - zeta_k1 V_k1) / zeta_o (o = k + 2): mu = lambda_o / zeta_o, a = lambda_k -
+// mu zeta_k, b = lambda_k1 - mu zeta_k1; and their gradients.
+struct FanCoordinates {
+  double a, b, mu;
+  Vec3 gradA, gradB, gradMu;
+};
+FanCoordinates fanCoordinates(const PowellSabinPatch& patch, int k, const Vec3& lambda) {
+  const int k1 = (k + 1) % 3, o = (k + 2) % 3;
+  const Vec3& zeta = patch.zeta;
   const std::array<Vec3, 3>& gl = patch.frame.grad;
-  const double mu = ratio[o], a = lambda[k] - mu * patch.zeta[k], b = lambda[k1] - mu * patch.zeta[k1];
-  const Vec3 gradMu = gl[o] / patch.zeta[o];
-  const Vec3 gradA = gl[k] - patch.zeta[k] * gradMu, gradB = gl[k1] - patch.zeta[k1] * gradMu;
-  // The line Z - R_k splits the fan triangle where a : b = (1 - t) : t. On the V_k side
-  // b / t <= a / (1 - t), on the other a / (1 - t) <= b / t: a small t or 1 - t is only
-  // divided by where it cannot amplify.
+  FanCoordinates fan;
+  fan.mu = lambda[o] / zeta[o];
+  fan.a = lambda[k] - fan.mu * zeta[k];
+  fan.b = lambda[k1] - fan.mu * zeta[k1];
+  fan.gradMu = gl[o] / zeta[o];
+  fan.gradA = gl[k] - zeta[k] * fan.gradMu;
+  fan.gradB = gl[k1] - zeta[k1] * fan.gradMu;
+  return fan;
+}
+
+}  // namespace
+
+Sample evaluatePiece(const PowellSabinPatch& patch, int piece, const Vec3& lambda) {
+  const int k = piece / 2;
   const double t = patch.t[k];
-  if (b * (1.0 - t) <= a * t) {  // (V_k, R_k, Z), with V_k1 = (R_k - (1 - t) V_k) / t
-    const Vec3 sigma(a - b * (1.0 - t) / t, b / t, mu);
-    return toWorld(evaluateBezier(patch.control[2 * k], sigma), {gradA - gradB * ((1.0 - t) / t), gradB / t, gradMu});
+  const FanCoordinates f = fanCoordinates(patch, k, lambda);
+  if (piece % 2 == 0) {  // (V_k, R_k, Z), with V_k1 = (R_k - (1 - t) V_k) / t
+    const Vec3 sigma(f.a - f.b * (1.0 - t) / t, f.b / t, f.mu);
+    return toWorld(evaluateBezier(patch.control[piece], sigma),
+                   {f.gradA - f.gradB * ((1.0 - t) / t), f.gradB / t, f.gradMu});
   }
   // (V_k1, R_k, Z), with V_k = (R_k - t V_k1) / (1 - t)
-  const Vec3 sigma(b - a * t / (1.0 - t), a / (1.0 - t), mu);
-  return toWorld(evaluateBezier(patch.control[2 * k + 1], sigma), {gradB - gradA * (t / (1.0 - t)), gradA / (1.0 - t), gradMu});
+  const Vec3 sigma(f.b - f.a * t / (1.0 - t), f.a / (1.0 - t), f.mu);
+  return toWorld(evaluateBezier(patch.control[piece], sigma),
+                 {f.gradB - f.gradA * (t / (1.0 - t)), f.gradA / (1.0 - t), f.gradMu});
+}
+
+Sample evaluate(const PowellSabinPatch& patch, const Vec3& lambda) {
+  // The fan triangle (V_k, V_k1, Z) holding the point is the one whose mu = lambda_o / zeta_o
+  // is the smallest: its (a, b, mu) are all >= 0 exactly then.
+  const Vec3 mu = lambda / patch.zeta;
+  const int o = mu.x <= mu.y ? (mu.x <= mu.z ? 0 : 2) : (mu.y <= mu.z ? 1 : 2);
+  const int k = (o + 1) % 3;
+  // The line Z - R_k splits it where a : b = (1 - t) : t. On the V_k side b / t <= a / (1 - t),
+  // on the other a / (1 - t) <= b / t: a small t or 1 - t only divides where it cannot amplify.
+  const FanCoordinates f = fanCoordinates(patch, k, lambda);
+  const double t = patch.t[k];
+  return evaluatePiece(patch, f.b * (1.0 - t) <= f.a * t ? 2 * k : 2 * k + 1, lambda);
 }
 
 }  // namespace radview

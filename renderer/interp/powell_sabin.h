@@ -48,5 +48,7 @@ PowellSabinPatch buildPowellSabin(const std::array<Vec3, 3>& V, const std::array
 // B and its world gradient at barycentric coordinates lambda of the big triangle, from the
 // piece that contains the point (on an inner edge either; they agree).
 Sample evaluate(const PowellSabinPatch& patch, const Vec3& lambda);
+// Piece p's polynomial (0..5, as in PowellSabinPatch), extended beyond the piece, at lambda.
+Sample evaluatePiece(const PowellSabinPatch& patch, int piece, const Vec3& lambda);
 
 }  // namespace radview

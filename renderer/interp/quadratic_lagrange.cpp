@@ -1,10 +1,9 @@
 // Quadratic Lagrange elements (vertex and mid-edge nodes), C0 across element edges: the
 // 6-node triangle, and the 8-node serendipity quad in the quad's bilinear parameters. Linear
 // elements, and quadratic polygons of other shapes, are interpolated linearly.
+#include "interp/bezier_triangle.h"
 #include "interp/bilinear_map.h"
-#include "interp/linear_triangle.h"
 #include "interp/methods.h"
-#include "interp/surface_triangulation.h"
 
 namespace radview {
 
@@ -28,8 +27,9 @@ class QuadraticLagrange : public Interpolant {
   Sample triangle(const Element& e, const Vec3& x) const {
     const std::array<Vec3, 3> p = {node(e.corners[0]).position, node(e.corners[1]).position,
                                    node(e.corners[2]).position};
-    const Vec3 l = barycentricCoordinates(p[0], p[1], p[2], x);
-    const std::array<Vec3, 3> dl = barycentricGradients(p);
+    const BarycentricFrame frame = barycentricFrame(p);
+    const Vec3 l = frame(x);
+    const std::array<Vec3, 3>& dl = frame.grad;
     Sample s;
     for (int i = 0; i < 3; ++i) {
       const int j = (i + 1) % 3;

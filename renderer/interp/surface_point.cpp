@@ -1,7 +1,7 @@
 #include "interp/surface_point.h"
 
 #include "core/error.h"
-#include "interp/surface_triangulation.h"
+#include "interp/bezier_triangle.h"
 #include "mesh/display_mesh.h"
 
 #include <limits>
@@ -13,7 +13,7 @@ namespace {
 // Closest point to p on triangle (a, b, c): its projection when inside, else the closest
 // point of the nearest edge.
 Vec3 closestOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-  const Vec3 w = barycentricCoordinates(a, b, c, p);
+  const Vec3 w = barycentricFrame({a, b, c})(p);
   if (w.x >= 0 && w.y >= 0 && w.z >= 0) return w.x * a + w.y * b + w.z * c;
   auto onSegment = [&](const Vec3& s, const Vec3& e) {
     const Vec3 d = e - s;

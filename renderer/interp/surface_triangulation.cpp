@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "geom/polygon.h"
 #include "geom/triangulate_cgal.h"
+#include "interp/bezier_triangle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,20 +12,6 @@
 #include <utility>
 
 namespace radview {
-
-Vec3 barycentricCoordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
-  const Vec3 n = glm::cross(b - a, c - a);
-  const double twiceArea2 = glm::dot(n, n);
-  if (!(twiceArea2 > 0.0)) return Vec3(1.0 / 3.0);
-  // Each coordinate from the edge opposite its vertex, so a sliver's short edge does not
-  // cancel against a long one.
-  const double u = glm::dot(glm::cross(c - b, p - b), n) / twiceArea2;
-  const double v = glm::dot(glm::cross(a - c, p - c), n) / twiceArea2;
-  const double w = glm::dot(glm::cross(b - a, p - a), n) / twiceArea2;
-  // u + v + w is 1 up to round-off; renormalise so the coordinates are affine exactly.
-  const double sum = u + v + w;
-  return sum != 0.0 ? Vec3(u, v, w) / sum : Vec3(1.0 / 3.0);
-}
 
 namespace {
 
@@ -161,7 +148,7 @@ SurfaceTriangulation::Location SurfaceTriangulation::locate(uint32_t element, co
   double bestInside = -std::numeric_limits<double>::infinity();
   for (uint32_t t : byElement_[element]) {
     const auto p = positions(t);
-    const Vec3 w = barycentricCoordinates(p[0], p[1], p[2], x);
+    const Vec3 w = barycentricFrame(p)(x);
     const double inside = std::min(w.x, std::min(w.y, w.z));
     if (inside > bestInside) {
       bestInside = inside;

@@ -61,8 +61,4 @@ class SurfaceTriangulation {
   std::vector<std::vector<uint32_t>> byElement_;
 };
 
-// Barycentric coordinates of p projected onto the plane of triangle (a, b, c): signed
-// areas of the sub-triangles against the triangle's normal. Zero-area triangle: (1/3, 1/3, 1/3).
-Vec3 barycentricCoordinates(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p);
-
 }  // namespace radview

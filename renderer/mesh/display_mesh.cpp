@@ -10,7 +10,7 @@ namespace radview {
 
 namespace {
 
-glm::vec3 f(const Vec3& v) { return glm::vec3(v); }
+glm::vec3 toFloat(const Vec3& v) { return glm::vec3(v); }
 
 }  // namespace
 
@@ -39,8 +39,8 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
   std::set<std::pair<uint32_t, uint32_t>> drawnEdges;
   auto addEdge = [&](uint32_t a, uint32_t b) {
     if (drawnEdges.insert({std::min(a, b), std::max(a, b)}).second) {
-      out.elementEdges.push_back(f(mesh.nodes[a].position));
-      out.elementEdges.push_back(f(mesh.nodes[b].position));
+      out.elementEdges.push_back(toFloat(mesh.nodes[a].position));
+      out.elementEdges.push_back(toFloat(mesh.nodes[b].position));
     }
   };
 
@@ -48,7 +48,7 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
     const Element& element = mesh.elements[e];
     const Rgb Bflat = mesh.meanB(e);
     for (const auto& t : elementTriangles(mesh, e))
-      for (uint32_t node : t) out.triangles.push_back({f(mesh.nodes[node].position), f(mesh.nodes[node].B), f(Bflat)});
+      for (uint32_t node : t) out.triangles.push_back({toFloat(mesh.nodes[node].position), toFloat(mesh.nodes[node].B), toFloat(Bflat)});
     const auto& c = element.corners;
     const size_t n = c.size();
     for (size_t i = 0; i < n; ++i) {

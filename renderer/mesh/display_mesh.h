@@ -15,7 +15,7 @@ namespace radview {
 struct DisplayVertex {
   glm::vec3 position;
   glm::vec3 B;      // the node's radiosity
-  glm::vec3 Bflat;  // the element's mean radiosity (flat shading)
+  glm::vec3 Bflat;  // the mean of the element's nodal values (flat shading: RadiosityMesh::meanB)
 };
 
 struct DisplayMesh {

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 
+#include <glm/gtc/constants.hpp>
 #include <tiny_gltf.h>
 
 #include <glm/gtc/matrix_access.hpp>
@@ -319,7 +320,7 @@ class SceneImporter {
       return;
     }
     const double yfov = camera.perspective.yfov;
-    if (!(yfov > 0.0 && yfov < M_PI))
+    if (!(yfov > 0.0 && yfov < glm::pi<double>()))
       fail("camera " + std::to_string(node.camera) + ": yfov " + std::to_string(yfov) + " is not in (0, pi)");
     // Spec, "Cameras": the camera looks down its node's -Z with +Y up.
     const glm::dmat3 linear(worldFromCamera);

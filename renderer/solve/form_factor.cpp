@@ -1,5 +1,7 @@
 #include "solve/form_factor.h"
 
+#include <glm/gtc/constants.hpp>
+
 #include "core/error.h"
 #include "geom/polygon.h"
 
@@ -10,7 +12,6 @@ namespace radview {
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
 
 // Sutherland-Hodgman against one plane: keeps the part of the polygon with dot(p, n) >= 0.
 // Vertices are relative to x, so the plane passes through the origin.
@@ -74,7 +75,7 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
   }
   // Above the horizon and in front of the emitter the integrand is >= 0 and the whole
   // hemisphere gives 1: clamp the rounding.
-  return std::clamp(sum / kTwoPi, 0.0, 1.0);
+  return std::clamp(sum / glm::two_pi<double>(), 0.0, 1.0);
 }
 
 }  // namespace radview

@@ -180,6 +180,21 @@ TEST_F(MeshRendererTest, ToneMapAppliesExposureAndSrgb) {
   EXPECT_EQ(image.rgba[2], 255);
 }
 
+TEST_F(MeshRendererTest, NegativeRadiosityIsShownBlackNeverNaN) {
+  // C1 interpolants undershoot below 0 between nodes of high-dynamic-range data; the linear
+  // image keeps the true (negative) value, the display clamps it to black before the sRGB
+  // power function could turn it into NaN.
+  RadiosityMesh flat = triangle({-50, -50, -1}, {50, -50, -1}, {0, 50, -1});
+  for (Node& n : flat.nodes) n.B = Rgb(-0.5, -1e-30, -1e8);
+  renderer.setMesh(flat);
+  renderer.render(cameraAt({0, 0, 0}, {0, 0, -1}), RenderSettings{}, 8, 8);
+  EXPECT_FLOAT_EQ(renderer.readLinear().rgba[0], -0.5f);
+  const Image image = renderer.readDisplay();
+  EXPECT_EQ(image.rgba[0], 0);
+  EXPECT_EQ(image.rgba[1], 0);
+  EXPECT_EQ(image.rgba[2], 0);
+}
+
 TEST_F(MeshRendererTest, CoverageIsMarkedInTheLinearImage) {
   renderer.setMesh(mesh);
   renderer.render(cameraAt({0, 0, 2}, {0, 0, 10}), RenderSettings{}, 16, 16);  // looking away
@@ -201,6 +216,23 @@ TEST_F(MeshRendererTest, ElementEdgesAreDrawnOverTheSurface) {
   for (size_t i = 0; i < image.rgba.size(); i += 4)
     if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) ++magenta;
   EXPECT_GT(magenta, size_t(width) / 2);  // the triangle's edges, at least a pixel wide
+}
+
+TEST_F(MeshRendererTest, ElementEdgesBehindASurfaceAreHidden) {
+  // The test triangle behind a much larger one that fills the view: none of its edges shows.
+  RadiosityMesh scene = mesh;
+  const uint32_t first = uint32_t(scene.nodes.size());
+  for (const Vec3& p : {Vec3(-100, -100, 1.5), Vec3(100, -100, 1.5), Vec3(0, 100, 1.5)})
+    scene.nodes.push_back({p, Rgb(0.5), {}});
+  scene.elements.push_back(Element{{first, first + 1, first + 2}, {}, 0, 0});
+  renderer.setMesh(scene);
+  RenderSettings settings;
+  settings.elementEdges = true;
+  settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
+  renderer.render(camera, settings, width, height);
+  const Image image = renderer.readDisplay();
+  for (size_t i = 0; i < image.rgba.size(); i += 4)
+    ASSERT_FALSE(image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) << "pixel " << i / 4;
 }
 
 TEST(ShaderProgram, BrokenShaderNamesTheFile) {

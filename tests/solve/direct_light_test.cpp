@@ -115,14 +115,5 @@ TEST(DirectLightTest, DefaultElementSizeIsADiagonalOverForty) {
   EXPECT_EQ(defaultElementSize(Scene{}), 1.0);
 }
 
-TEST(DirectLightTest, MeshAndLightIsMeshThenLight) {
-  const Scene scene = floorUnderSquareLight();
-  RadiosityMesh expected = meshUniformly(scene, 0.3);
-  solveDirectIllumination(scene, expected);
-  const RadiosityMesh mesh = meshAndLight(scene, 0.3);
-  ASSERT_EQ(mesh.nodes.size(), expected.nodes.size());
-  for (size_t i = 0; i < mesh.nodes.size(); ++i) EXPECT_EQ(mesh.nodes[i].B, expected.nodes[i].B);
-}
-
 }  // namespace
 }  // namespace radview
