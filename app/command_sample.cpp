@@ -95,8 +95,7 @@ int runSample(const SampleOptions& options) {
   if (options.diagonal != "02" && options.diagonal != "13")
     throw Error("--diagonal '" + options.diagonal + "': expected 02 or 13");
   interpolantOptions.diagonal = options.diagonal == "13" ? QuadDiagonal::D13 : QuadDiagonal::D02;
-  interpolantOptions.cloughTocher =
-      options.variant == "book" ? CloughTocherVariant::Book : CloughTocherVariant::AffineInvariant;
+  interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
   interpolantOptions.useStoredGradients = !options.estimateGradients;
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize);

@@ -20,7 +20,9 @@ using namespace radview;
 
 
 void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
-  command.add_option("--method", d.method, "Interpolant: flat (one value per element) or gouraud (linear)")
+  command.add_option("--method", d.method,
+                     "Interpolant: flat (one value per element), gouraud (linear), c1-quadratic (Powell-Sabin) or "
+                     "clough-tocher, the last two evaluated exactly per pixel")
       ->check(CLI::IsMember(gl::shadingMethodNames()))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
@@ -32,6 +34,10 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
                      "A preset (" + joined(cameraPresetNames()) + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
                      "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
+  command.add_option("--variant", d.variant,
+                     "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
+      ->check(CLI::IsMember({"affine", "book"}))
+      ->capture_default_str();
   command.add_option("--element-size", d.elementSize,
                      "Scenes: edge length of the uniform mesh's elements (default: bounds diagonal / 40)")
       ->check(CLI::Range(1e-12, 1e12));

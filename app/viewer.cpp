@@ -35,6 +35,12 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   switch (key) {
     case GLFW_KEY_1: s.settings.method = gl::ShadingMethod::Flat; break;
     case GLFW_KEY_2: s.settings.method = gl::ShadingMethod::Gouraud; break;
+    case GLFW_KEY_3: s.settings.method = gl::ShadingMethod::C1Quadratic; break;
+    case GLFW_KEY_4: s.settings.method = gl::ShadingMethod::CloughTocher; break;
+    case GLFW_KEY_V:
+      s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book ? CloughTocherVariant::AffineInvariant
+                                                                                    : CloughTocherVariant::Book;
+      break;
     case GLFW_KEY_P: s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect; break;
     case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
     case GLFW_KEY_R: rotateView45(s); break;
@@ -159,6 +165,7 @@ int runViewer(const ViewerOptions& options) {
   state.settings.perspectiveCorrect = !options.display.screenSpace;
   state.settings.exposure = options.display.exposure;
   state.settings.elementEdges = options.display.edges;
+  state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
   adoptViewedFile(state, std::move(viewed));

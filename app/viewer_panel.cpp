@@ -18,7 +18,8 @@ void resetCamera(ViewerState& state) {
 }
 
 const char* shortcutHelp() {
-  return "Viewer keys: 1 flat, 2 Gouraud, P perspective-correct / screen-space, E element edges,\n"
+  return "Viewer keys: 1 flat, 2 Gouraud, 3 C1 quadratic, 4 Clough-Tocher, V its book / affine variant,\n"
+         "P perspective-correct / screen-space Gouraud, E element edges,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -51,10 +52,24 @@ void drawPanel(ViewerState& state) {
   ImGui::RadioButton("Flat [1]", &method, static_cast<int>(gl::ShadingMethod::Flat));
   ImGui::SameLine();
   ImGui::RadioButton("Gouraud [2]", &method, static_cast<int>(gl::ShadingMethod::Gouraud));
+  ImGui::RadioButton("C1 quadratic [3]", &method, static_cast<int>(gl::ShadingMethod::C1Quadratic));
+  ImGui::SameLine();
+  ImGui::RadioButton("Clough-Tocher [4]", &method, static_cast<int>(gl::ShadingMethod::CloughTocher));
   state.settings.method = static_cast<gl::ShadingMethod>(method);
-  ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Off: interpolate linearly in screen space, as classic Gouraud hardware did (9.2, note 3)");
+  if (state.settings.method == gl::ShadingMethod::Gouraud) {
+    ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Off: interpolate linearly in screen space, as classic Gouraud hardware did (9.2, note 3)");
+  }
+  if (state.settings.method == gl::ShadingMethod::CloughTocher) {
+    bool book = state.settings.cloughTocher == CloughTocherVariant::Book;
+    if (ImGui::Checkbox("Book cross-boundary direction [V]", &book))
+      state.settings.cloughTocher = book ? CloughTocherVariant::Book : CloughTocherVariant::AffineInvariant;
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Edge normal, as the text reads; off: centroid to centroid (affine invariant, default)");
+  }
+  if (state.settings.method == gl::ShadingMethod::C1Quadratic || state.settings.method == gl::ShadingMethod::CloughTocher)
+    ImGui::TextDisabled("exact per pixel; C0 / C-1 edges relaxed");
 
   section("Display");
   float exposure = static_cast<float>(state.settings.exposure);

@@ -2,6 +2,8 @@
 
 #include "core/error.h"
 #include "core/strings.h"
+#include "gl/patch_vertices.h"
+#include "interp/c1_patches.h"
 #include "mesh/display_mesh.h"
 
 #include <algorithm>
@@ -11,7 +13,7 @@
 namespace radview::gl {
 
 const std::vector<std::string>& shadingMethodNames() {
-  static const std::vector<std::string> names = {"flat", "gouraud"};
+  static const std::vector<std::string> names = {"flat", "gouraud", "c1-quadratic", "clough-tocher"};
   return names;
 }
 
@@ -59,14 +61,25 @@ MeshRenderer::MeshRenderer() {
   glVertexArrayAttribFormat(edgeVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
   glVertexArrayAttribBinding(edgeVao_, 0, 0);
   glCreateVertexArrays(1, &emptyVao_);
+  glCreateVertexArrays(1, &patchVao_);
+  glCreateBuffers(1, &patchVbo_);
+  glVertexArrayVertexBuffer(patchVao_, 0, patchVbo_, 0, sizeof(BezierVertex));
+  for (GLuint attribute = 0; attribute < 10; ++attribute) {
+    const GLuint offset = attribute == 0   ? offsetof(BezierVertex, position)
+                          : attribute == 1 ? offsetof(BezierVertex, beta)
+                                           : GLuint(offsetof(BezierVertex, control) + (attribute - 2) * sizeof(glm::vec4));
+    glEnableVertexArrayAttrib(patchVao_, attribute);
+    glVertexArrayAttribFormat(patchVao_, attribute, attribute < 2 ? 3 : 4, GL_FLOAT, GL_FALSE, offset);
+    glVertexArrayAttribBinding(patchVao_, attribute, 0);
+  }
   glCreateQueries(GL_TIME_ELAPSED, 2, timerQueries_.data());
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_};
-  glDeleteVertexArrays(3, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_};
-  glDeleteBuffers(2, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, patchVao_};
+  glDeleteVertexArrays(4, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_};
+  glDeleteBuffers(3, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -79,6 +92,22 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
                     GL_STATIC_DRAW);
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+  mesh_ = mesh;
+  patchesFor_ = -1;
+}
+
+void MeshRenderer::uploadPatches(const RenderSettings& settings) {
+  const int wanted = int(settings.method) * 2 + int(settings.cloughTocher);
+  if (wanted == patchesFor_) return;
+  const SurfaceTriangulation surface(mesh_);
+  const CornerGradients gradients = vertexGradients(surface, true);
+  const std::vector<BezierVertex> vertices =
+      settings.method == ShadingMethod::CloughTocher
+          ? cloughTocherVertices(buildCloughTocherPatches(surface, gradients, settings.cloughTocher))
+          : powellSabinVertices(buildPowellSabinPatches(surface, gradients));
+  glNamedBufferData(patchVbo_, vertices.size() * sizeof(BezierVertex), vertices.data(), GL_STATIC_DRAW);
+  patchVertices_ = static_cast<GLsizei>(vertices.size());
+  patchesFor_ = wanted;
 }
 
 void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, int width, int height) {
@@ -110,12 +139,21 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   // Push surfaces back a little so edge overlays drawn at the same depth win.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  meshProgram_.set("clipFromWorld", clipFromWorld);
-  meshProgram_.set("method", static_cast<int>(settings.method));
-  meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
-  meshProgram_.use();
-  glBindVertexArray(meshVao_);
-  glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  if (settings.method == ShadingMethod::Flat || settings.method == ShadingMethod::Gouraud) {
+    meshProgram_.set("clipFromWorld", clipFromWorld);
+    meshProgram_.set("method", static_cast<int>(settings.method));
+    meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
+    meshProgram_.use();
+    glBindVertexArray(meshVao_);
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  } else {
+    uploadPatches(settings);
+    bezierProgram_.set("clipFromWorld", clipFromWorld);
+    bezierProgram_.set("degree", settings.method == ShadingMethod::CloughTocher ? 3 : 2);
+    bezierProgram_.use();
+    glBindVertexArray(patchVao_);
+    glDrawArrays(GL_TRIANGLES, 0, patchVertices_);
+  }
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   // Pass 2: tone map into the display target.

@@ -1,11 +1,13 @@
 #pragma once
-// Draws a radiosity mesh: flat or Gouraud shading (perspective-correct or screen-space),
-// exposure and sRGB tone mapping, and the element-edge overlay. Needs a current OpenGL 4.5
+// Draws a radiosity mesh: flat or Gouraud shading (perspective-correct or screen-space), or
+// the C1 interpolants evaluated exactly per pixel; exposure and sRGB tone mapping; the
+// element-edge overlay. Needs a current OpenGL 4.5
 // core context (EglContext, or the viewer's window).
 #include "core/camera.h"
 #include "core/image.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
+#include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
 
 #include <epoxy/gl.h>
@@ -16,13 +18,15 @@
 
 namespace radview::gl {
 
-enum class ShadingMethod : int { Flat = 0, Gouraud = 1 };
-const std::vector<std::string>& shadingMethodNames();  // "flat", "gouraud" (by enum value)
+enum class ShadingMethod : int { Flat = 0, Gouraud = 1, C1Quadratic = 2, CloughTocher = 3 };
+// "flat", "gouraud", "c1-quadratic", "clough-tocher" (by enum value)
+const std::vector<std::string>& shadingMethodNames();
 ShadingMethod shadingMethodFromName(const std::string& name);  // throws Error
 
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::Gouraud;
-  bool perspectiveCorrect = true;  // false: interpolate linearly in screen space
+  bool perspectiveCorrect = true;  // Gouraud: false interpolates linearly in screen space
+  CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
   double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
   bool elementEdges = false;
   glm::vec3 background{0.08f, 0.08f, 0.09f};
@@ -52,8 +56,15 @@ class MeshRenderer {
   ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
+  ShaderProgram bezierProgram_{{"bezier.vert", "bezier.frag"}};
   GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
+  // The C1 pieces, built when a C1 method is first drawn (and again when its variant changes).
+  void uploadPatches(const RenderSettings& settings);
+  RadiosityMesh mesh_;
+  GLuint patchVao_ = 0, patchVbo_ = 0;
+  GLsizei patchVertices_ = 0;
+  int patchesFor_ = -1;  // the method and variant the patch buffer holds, -1 none
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};
   int frame_ = 0;

@@ -8,10 +8,6 @@
 
 namespace radview {
 
-std::ostream& operator<<(std::ostream& os, const Sample& s) {
-  return os << "B " << s.B << " grad " << s.gradient[0] << ' ' << s.gradient[1] << ' ' << s.gradient[2];
-}
-
 namespace {
 
 // The vertex opposite the longest edge, and that edge's squared length.

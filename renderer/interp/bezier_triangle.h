@@ -13,7 +13,6 @@ namespace radview {
 
 using RgbGradient = std::array<Vec3, 3>;  // [c] = gradient of channel c
 
-std::ostream& operator<<(std::ostream& os, const Sample& s);
 
 // The barycentric coordinate functions lambda_i of a triangle V, as the affine functions of
 // space they are: lambda_i(x) = dot(grad[i], x - V[i+1]), i.e. each measured from a vertex of
@@ -85,6 +84,8 @@ std::array<Rgb, N> linearBezierNet(const std::array<Rgb, 3>& f) {
 }
 
 // (dot(g[0], v), dot(g[1], v), dot(g[2], v)): the derivative of each channel along v.
-inline Rgb along(const RgbGradient& g, const Vec3& v) { return {glm::dot(g[0], v), glm::dot(g[1], v), glm::dot(g[2], v)}; }
+inline Rgb along(const RgbGradient& g, const Vec3& v) {
+  return {glm::dot(g[0], v), glm::dot(g[1], v), glm::dot(g[2], v)};
+}
 
 }  // namespace radview

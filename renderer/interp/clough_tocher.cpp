@@ -10,10 +10,11 @@ namespace {
 
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// C&W fig. 9.12, step 3 (c): the inner control value b111 of piece k from the condition
-// across its outer edge. With delta the barycentric components of d in the piece (the
-// derivative along d is 3 sum_ijk B^2_ijk (delta . b), a quadratic along the edge with
-// Bezier coefficients D0, D1, D2), the ends are fixed by the corners' tangent planes,
+// C&W §9.2.2, fig. 9.12, step 3 (c): the inner control value b111 of piece k from the
+// condition across its outer edge. With delta the barycentric components of d in the piece,
+// the derivative along d is 3 sum_{|m|=2} B^2_m (delta0 b_m+100 + delta1 b_m+010 + delta2
+// b_m+001); along the edge it is the quadratic with Bezier coefficients D0, D1, D2 (m = 200,
+// 110, 020). Its ends are fixed by the corners' tangent planes,
 // D0 = dot(g_k, d) / 3 and D2 = dot(g_k+1, d) / 3, and
 //   reduced: D1 = (D0 + D2) / 2 (linear: the wedge's slope is the average of the ends');
 //   full:    D1 = 2 m / 3 - (D0 + D2) / 2 (the midpoint value 3 (D0 + 2 D1 + D2) / 4 = m).
@@ -33,6 +34,8 @@ Rgb innerControl(const std::array<Vec3, 3>& gradSigma, const Vec3& edgeNormal, c
 
 }  // namespace
 
+// C&W §9.2.2, fig. 9.12, steps 1-4 (a-e); the full element is Clough & Tocher's (1965), the
+// reduced one the book's; per-corner gradients are Salesin et al.'s (1992) relaxed vertices.
 CloughTocherPatch buildCloughTocher(const std::array<Vec3, 3>& V, const std::array<Rgb, 3>& f,
                                     const std::array<RgbGradient, 3>& g, const std::array<CrossBoundary, 3>& edges) {
   for (int i = 0; i < 3; ++i) {

@@ -15,7 +15,8 @@ namespace radview {
 // the edge and the c on each side).
 struct CrossBoundary {
   // Direction across the edge (its component off the triangle's plane is ignored); must not be
-  // parallel to the edge: within 1e-10 rad of it the edge's normal is used instead.
+  // parallel to the edge: within 1e-10 rad of it (or zero) the edge's unit normal is used
+  // instead, midDerivative then read along that.
   Vec3 d{0.0};
   // Reduced element: the derivative along d varies linearly along the edge, between the end
   // values dot(g_k, d) and dot(g_k+1, d) (the wedge's slope across the edge is the average of

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,8 @@ struct Sample {
   Rgb B{0.0};
   std::array<Vec3, 3> gradient{};
 };
+
+std::ostream& operator<<(std::ostream& os, const Sample& s);
 
 enum class Method {
   Flat,          // the element's mean nodal value
@@ -38,6 +41,9 @@ enum class CloughTocherVariant {
   AffineInvariant,  // centroid to neighbour centroid (scipy's CloughTocher2DInterpolator)
   Book,             // the edge normal, as the text reads
 };
+
+// "affine", "book". Throws Error.
+CloughTocherVariant cloughTocherVariantFromName(const std::string& name);
 
 struct InterpolantOptions {
   QuadDiagonal diagonal = QuadDiagonal::D02;

@@ -1,5 +1,6 @@
 // The C0 and C-1 methods that need nothing beyond the element itself: flat, linear
 // (barycentric on a triangulation of the element) and bilinear quads.
+#include "geom/polygon.h"
 #include "interp/bezier_triangle.h"
 #include "interp/bilinear_map.h"
 #include "interp/linear_triangle.h"
@@ -57,11 +58,18 @@ class Linear : public Interpolant {
 // elements have no bilinear form and are interpolated linearly.
 class Bilinear : public Interpolant {
  public:
-  explicit Bilinear(const RadiosityMesh& mesh) : mesh_(mesh), linear_(mesh, QuadDiagonal::D02) {}
+  explicit Bilinear(const RadiosityMesh& mesh)
+      : mesh_(mesh), linear_(mesh, QuadDiagonal::D02), convexQuad_(mesh.elements.size()) {
+    // A non-convex quad folds its bilinear map (the Jacobian changes sign inside), so the
+    // inverse is not unique and Newton's method wandered: B off by 10x the data's range at
+    // its own corners (a jittered grid, extremes_test). Such quads are interpolated linearly.
+    for (size_t e = 0; e < mesh.elements.size(); ++e)
+      convexQuad_[e] = mesh.elements[e].corners.size() == 4 && isConvex(mesh.cornerPositions(e));
+  }
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
-    if (e.corners.size() != 4) return linear_.evaluate(element, x);
+    if (!convexQuad_[element]) return linear_.evaluate(element, x);
     std::array<Vec3, 4> p;
     std::array<Rgb, 4> f;
     for (int i = 0; i < 4; ++i) {
@@ -82,6 +90,7 @@ class Bilinear : public Interpolant {
  private:
   const RadiosityMesh& mesh_;
   Linear linear_;
+  std::vector<bool> convexQuad_;
 };
 
 }  // namespace

@@ -144,16 +144,16 @@ FanCoordinates fanCoordinates(const PowellSabinPatch& patch, int k, const Vec3& 
 Sample evaluatePiece(const PowellSabinPatch& patch, int piece, const Vec3& lambda) {
   const int k = piece / 2;
   const double t = patch.t[k];
-  const FanCoordinates f = fanCoordinates(patch, k, lambda);
+  const FanCoordinates fan = fanCoordinates(patch, k, lambda);
   if (piece % 2 == 0) {  // (V_k, R_k, Z), with V_k1 = (R_k - (1 - t) V_k) / t
-    const Vec3 sigma(f.a - f.b * (1.0 - t) / t, f.b / t, f.mu);
+    const Vec3 sigma(fan.a - fan.b * (1.0 - t) / t, fan.b / t, fan.mu);
     return toWorld(evaluateBezier(patch.control[piece], sigma),
-                   {f.gradA - f.gradB * ((1.0 - t) / t), f.gradB / t, f.gradMu});
+                   {fan.gradA - fan.gradB * ((1.0 - t) / t), fan.gradB / t, fan.gradMu});
   }
   // (V_k1, R_k, Z), with V_k = (R_k - t V_k1) / (1 - t)
-  const Vec3 sigma(f.b - f.a * t / (1.0 - t), f.a / (1.0 - t), f.mu);
+  const Vec3 sigma(fan.b - fan.a * t / (1.0 - t), fan.a / (1.0 - t), fan.mu);
   return toWorld(evaluateBezier(patch.control[piece], sigma),
-                 {f.gradB - f.gradA * (t / (1.0 - t)), f.gradA / (1.0 - t), f.gradMu});
+                 {fan.gradB - fan.gradA * (t / (1.0 - t)), fan.gradA / (1.0 - t), fan.gradMu});
 }
 
 Sample evaluate(const PowellSabinPatch& patch, const Vec3& lambda) {
@@ -164,9 +164,9 @@ Sample evaluate(const PowellSabinPatch& patch, const Vec3& lambda) {
   const int k = (o + 1) % 3;
   // The line Z - R_k splits it where a : b = (1 - t) : t. On the V_k side b / t <= a / (1 - t),
   // on the other a / (1 - t) <= b / t: a small t or 1 - t only divides where it cannot amplify.
-  const FanCoordinates f = fanCoordinates(patch, k, lambda);
+  const FanCoordinates fan = fanCoordinates(patch, k, lambda);
   const double t = patch.t[k];
-  return evaluatePiece(patch, f.b * (1.0 - t) <= f.a * t ? 2 * k : 2 * k + 1, lambda);
+  return evaluatePiece(patch, fan.b * (1.0 - t) <= fan.a * t ? 2 * k : 2 * k + 1, lambda);
 }
 
 }  // namespace radview

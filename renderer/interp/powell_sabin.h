@@ -20,16 +20,16 @@ Vec3 incenter(const Vec3& V0, const Vec3& V1, const Vec3& V2);
 // Computed without intersecting lines: Z is at distance r (its inradius) from the edge with
 // its foot, the incircle's touch point, at edge parameter tZ (likewise r', tZ'), so the
 // crossing is at t = (r' tZ + r tZ') / (r + r'): a convex combination of two touch points,
-// always on the edge, and exact however flat the angle between the segment and the edge
+// always on the edge, and accurate however flat the angle between the segment and the edge
 // (small r + r'). Both triangles degenerate (r + r' = 0): the midpoint. Symmetric, to the
 // last bit, in swapping (Vi, Vj) and (Z, Zneighbour), so both neighbours get the same R.
 // A boundary edge has no neighbour: use its midpoint.
 Vec3 edgeSplitPoint(const Vec3& Vi, const Vec3& Vj, const Vec3& Z, const Vec3& Zneighbour);
 
 struct PowellSabinPatch {
-  BarycentricFrame frame;  // of V0 V1 V2
-  Vec3 Z{0.0};             // the incenter (the centroid of a degenerate triangle)
-  Vec3 zeta{0.0};          // Z = sum_i zeta_i V_i
+  BarycentricFrame frame;     // of V0 V1 V2
+  Vec3 Z{0.0};                // the incenter (the centroid of a degenerate triangle)
+  Vec3 zeta{0.0};             // Z = sum_i zeta_i V_i
   std::array<double, 3> t{};  // R_k = (1 - t_k) V_k + t_k V_k+1, 0 < t_k < 1
   // Piece 2k is the sub-triangle (V_k, R_k, Z), piece 2k+1 is (V_k+1, R_k, Z); their b_ijk
   // (order of bezierIndex) have i for the vertex, j for R_k and k for Z.

@@ -1,6 +1,7 @@
 // Quadratic Lagrange elements (vertex and mid-edge nodes), C0 across element edges: the
 // 6-node triangle, and the 8-node serendipity quad in the quad's bilinear parameters. Linear
 // elements, and quadratic polygons of other shapes, are interpolated linearly.
+#include "geom/polygon.h"
 #include "interp/bezier_triangle.h"
 #include "interp/bilinear_map.h"
 #include "interp/methods.h"
@@ -11,12 +12,18 @@ namespace {
 
 class QuadraticLagrange : public Interpolant {
  public:
-  explicit QuadraticLagrange(const RadiosityMesh& mesh) : mesh_(mesh), linear_(makeLinear(mesh, QuadDiagonal::D02)) {}
+  explicit QuadraticLagrange(const RadiosityMesh& mesh)
+      : mesh_(mesh), linear_(makeLinear(mesh, QuadDiagonal::D02)), convexQuad_(mesh.elements.size()) {
+    // Non-convex quads fold the bilinear map the serendipity quad is built on (see Bilinear in
+    // linear_methods.cpp): they are interpolated linearly, like other polygons.
+    for (size_t e = 0; e < mesh.elements.size(); ++e)
+      convexQuad_[e] = mesh.elements[e].corners.size() == 4 && isConvex(mesh.cornerPositions(e));
+  }
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
     if (e.order() == ElementOrder::Quadratic && e.corners.size() == 3) return triangle(e, x);
-    if (e.order() == ElementOrder::Quadratic && e.corners.size() == 4) return quad(e, x);
+    if (e.order() == ElementOrder::Quadratic && convexQuad_[element]) return quad(e, x);
     return linear_->evaluate(element, x);
   }
 
@@ -75,6 +82,7 @@ class QuadraticLagrange : public Interpolant {
 
   const RadiosityMesh& mesh_;
   std::unique_ptr<Interpolant> linear_;
+  std::vector<bool> convexQuad_;
 };
 
 }  // namespace

@@ -32,9 +32,21 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
                                                   uint32_t element) {
   const Element& e = mesh.elements[element];
   std::vector<std::vector<std::pair<double, uint32_t>>> inserted(e.corners.size());
+  // A node the element across the same edge has as a corner is no T-vertex: that element
+  // shares the whole edge, so the node is the apex of a cap (a triangle thinner than the 1e-5
+  // relative tolerance of MeshTopology's on-edge test, aspect ratio above ~1e5). Inserted, it
+  // made this element overlap the cap and cut both off from their neighbours (no C1 across
+  // the cap's edges, found by extremes_test's caps of aspect 1e5 .. 1e7).
+  auto isCapApex = [&](const TVertex& t) {
+    const int64_t across = topology.neighbour(element, t.edge);
+    if (across < 0) return false;
+    for (uint32_t c : mesh.elements[size_t(across)].corners)
+      if (topology.positionId(c) == topology.positionId(t.node)) return true;
+    return false;
+  };
   if (e.order() == ElementOrder::Linear)
     for (const TVertex& t : topology.tVertices())
-      if (t.element == element) inserted[t.edge].push_back({t.t, t.node});
+      if (t.element == element && !isCapApex(t)) inserted[t.edge].push_back({t.t, t.node});
   std::vector<BoundaryVertex> boundary;
   for (uint32_t k = 0; k < e.corners.size(); ++k) {
     boundary.push_back({e.corners[k], k});
@@ -95,15 +107,29 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh)
       const uint32_t b = topology_.positionId(triangles_[t].node[(k + 1) % 3]);
       byEdge[{std::min(a, b), std::max(a, b)}].push_back({t, k});
     }
+  auto smallestHeight = [&](uint32_t triangle) {
+    const auto p = positions(triangle);
+    const double longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
+    return longest > 0.0 ? glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) / longest : 0.0;
+  };
   for (const auto& [key, sides] : byEdge) {
     if (sides.size() != 2) continue;
     const auto [t0, k0] = sides[0];
     const auto [t1, k1] = sides[1];
-    const auto p0 = positions(t0);
+    // The far vertex of one is measured from the plane of the other whose normal is the better
+    // conditioned, the one with the larger smallest height (a triangle's normal is good to
+    // ~eps |x| / that height). Measured from a sliver's plane, as it was when the sliver came
+    // first, a planar neighbour's far vertex was off by that error times the neighbour's size,
+    // and the edge read as a crease: no neighbour, no C1 across it (a sliver of height 6e-8
+    // beside a triangle of size 0.1, c1_mesh_test's sliver meshes).
+    const bool firstIsReference = smallestHeight(t0) >= smallestHeight(t1);
+    const uint32_t reference = firstIsReference ? t0 : t1, other = firstIsReference ? t1 : t0;
+    const int otherEdge = firstIsReference ? k1 : k0;
+    const auto p0 = positions(reference);
     const double size = glm::length(p0[1] - p0[0]) + glm::length(p0[2] - p0[1]);
-    const Vec3 n0 = normal(t0);
-    const bool samePlane = glm::dot(n0, normal(t1)) > 1.0 - 1e-9 &&
-                           std::abs(glm::dot(positions(t1)[(k1 + 2) % 3] - p0[0], n0)) <= 1e-9 * size;
+    const Vec3 n0 = normal(reference);
+    const bool samePlane = glm::dot(n0, normal(other)) > 1.0 - 1e-9 &&
+                           std::abs(glm::dot(positions(other)[(otherEdge + 2) % 3] - p0[0], n0)) <= 1e-9 * size;
     if (!samePlane) continue;
     SurfaceTriangle& A = triangles_[t0];
     SurfaceTriangle& B = triangles_[t1];

@@ -4,6 +4,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <tuple>
 
 namespace radview {
 
@@ -34,12 +35,17 @@ std::pair<Vec3, Vec3> planeBasis(const Vec3& n) {
 // components it sees.
 std::array<Vec2, 3> solveSymmetric2(double a, double b, double d, const std::array<Vec2, 3>& r) {
   std::array<Vec2, 3> out{};
-  const double trace = a + d, det = a * d - b * b;
-  const double disc = std::sqrt(std::max(0.0, 0.25 * trace * trace - det));
+  // The half-difference of the eigenvalues as hypot((a - d) / 2, b), not from trace^2 / 4 - det,
+  // which cancels to an absolute error of eps * trace.
+  const double trace = a + d;
+  const double disc = std::hypot(0.5 * (a - d), b);
   const double l1 = 0.5 * trace + disc, l2 = 0.5 * trace - disc;  // l1 >= l2 >= 0
   if (!(l1 > 0.0)) return out;
-  // Eigenvector of l1.
-  Vec2 e1 = std::abs(b) > 1e-300 ? Vec2(l1 - d, b) : (a >= d ? Vec2(1, 0) : Vec2(0, 1));
+  // Eigenvector of l1, from the row of M - l1 I without cancellation: (l1 - d, b) when a >= d,
+  // else (b, l1 - a). Always (l1 - d, b), as it was, lost its direction to the rounding of
+  // l1 - d (a tiny difference when a < d and b is small): a regular, symmetric stencil gave
+  // gradients of exactly linear data wrong by 1e-8 (extremes_test, the needle-row mesh).
+  Vec2 e1 = std::abs(b) > 1e-300 ? (a >= d ? Vec2(l1 - d, b) : Vec2(b, l1 - a)) : (a >= d ? Vec2(1, 0) : Vec2(0, 1));
   e1 = glm::normalize(e1);
   const Vec2 e2(-e1.y, e1.x);
   for (int c = 0; c < 3; ++c) {
@@ -124,7 +130,17 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
   for (const auto& [root, corners] : members) {
     const uint32_t t0 = corners.front() / 3;
     const uint32_t node = triangles[t0].node[corners.front() % 3];
-    const Vec3 n = surface.normal(t0);
+    // The sector's plane from a triangle that has one: a zero-area triangle (validateMesh
+    // refuses them, but a mesh built in code can hold one) has a zero normal, and the plane
+    // basis and least-squares gradient built on it were NaN (two coincident nodes made the
+    // C1 interpolants abort in buildPowellSabin / buildCloughTocher). No plane at all: 0.
+    Vec3 n(0.0);
+    for (uint32_t c : corners)
+      if (n == Vec3(0.0)) n = surface.normal(c / 3);
+    if (n == Vec3(0.0)) {
+      sectorGradient[root] = Gradient{};
+      continue;
+    }
     const Vec3 x0 = mesh.nodes[node].position;
     std::set<uint32_t> elements;
     for (uint32_t c : corners) elements.insert(triangles[c / 3].element);
@@ -160,19 +176,26 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
     Rgb slope;
   };
   std::map<uint32_t, std::vector<Constraint>> constraints;
-  std::set<std::pair<uint32_t, uint32_t>> done;  // (sector, sector) pairs per edge end
+  // Each C0 edge end is met twice, once from either side: one constraint per (sector, sector,
+  // far end of the edge). Keyed by the sector pair alone, the second of two C0 edges that
+  // separate the same two sectors (the corner of an L of C0 edges, where one sector lies
+  // inside the L and one outside) was dropped, and B jumped along it (c1_mesh_test).
+  std::set<std::tuple<uint32_t, uint32_t, uint32_t>> done;
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int64_t u = triangles[t].neighbour[k];
       if (u < 0 || triangles[t].continuity[k] != Continuity::C0) continue;
       const auto p = surface.positions(t);
+      // A zero-length edge (coincident nodes, in a mesh built in code) has no direction.
+      if (p[(k + 1) % 3] == p[k]) continue;
       const Vec3 edge = glm::normalize(p[(k + 1) % 3] - p[k]);
       for (int end = 0; end < 2; ++end) {
         const int corner = (k + end) % 3;
         const int other = surface.cornerAt(uint32_t(u), triangles[t].node[corner]);
         if (other < 0) continue;
         const uint32_t a = sectors.find(3 * t + corner), b = sectors.find(3 * uint32_t(u) + other);
-        if (a == b || !done.insert({std::min(a, b), std::max(a, b)}).second) continue;
+        const uint32_t far = surface.topology().positionId(triangles[t].node[(k + 1 - end) % 3]);
+        if (a == b || !done.insert({std::min(a, b), std::max(a, b), far}).second) continue;
         Rgb slope;
         for (int c = 0; c < 3; ++c)
           slope[c] = 0.5 * (glm::dot(sectorGradient[a][c], edge) + glm::dot(sectorGradient[b][c], edge));

@@ -129,9 +129,12 @@ TEST(BezierTriangle, DeCasteljauMatchesEquation97AndItsDerivatives) {
           const double m = factorial(n) / (factorial(i) * factorial(j) * factorial(k));
           const Rgb& bijk = b[bezierIndex(n, i, j)];
           expected.B += m * std::pow(beta.x, i) * std::pow(beta.y, j) * std::pow(beta.z, k) * bijk;
-          if (i > 0) expected.dBeta[0] += m * i * std::pow(beta.x, i - 1) * std::pow(beta.y, j) * std::pow(beta.z, k) * bijk;
-          if (j > 0) expected.dBeta[1] += m * j * std::pow(beta.x, i) * std::pow(beta.y, j - 1) * std::pow(beta.z, k) * bijk;
-          if (k > 0) expected.dBeta[2] += m * k * std::pow(beta.x, i) * std::pow(beta.y, j) * std::pow(beta.z, k - 1) * bijk;
+          if (i > 0)
+            expected.dBeta[0] += m * i * std::pow(beta.x, i - 1) * std::pow(beta.y, j) * std::pow(beta.z, k) * bijk;
+          if (j > 0)
+            expected.dBeta[1] += m * j * std::pow(beta.x, i) * std::pow(beta.y, j - 1) * std::pow(beta.z, k) * bijk;
+          if (k > 0)
+            expected.dBeta[2] += m * k * std::pow(beta.x, i) * std::pow(beta.y, j) * std::pow(beta.z, k - 1) * bijk;
         }
       const BezierJet jet = evaluateBezier(n, b.data(), beta);
       SCOPED_TRACE(testing::Message() << "n " << n << " beta " << str(beta));
@@ -195,7 +198,8 @@ TEST(BarycentricFrame, ReconstructsTheProjectedPointAndDifferentiatesLambda) {
     EXPECT_NEAR(glm::length(lambda.x * V[0] + lambda.y * V[1] + lambda.z * V[2] - inPlane), 0.0, 1e-14);
     for (int i = 0; i < 3; ++i) {
       EXPECT_NEAR(glm::dot(frame.grad[i], n), 0.0, 1e-12) << "in the plane";
-      for (int j = 0; j < 3; ++j) EXPECT_NEAR(glm::dot(frame.grad[i], V[j] - V[(j + 1) % 3]), (i == j) - (i == (j + 1) % 3), 1e-13);
+      for (int j = 0; j < 3; ++j)
+        EXPECT_NEAR(glm::dot(frame.grad[i], V[j] - V[(j + 1) % 3]), (i == j) - (i == (j + 1) % 3), 1e-13);
     }
   }
 }

@@ -1,11 +1,14 @@
-// The bundled assets hold what they claim. assets/fig9_8_quad.gltf is written by the
-// solution writer from the definition below:
+// The bundled assets hold what they claim. assets/fig9_8_quad.gltf and
+// assets/discontinuities.gltf are written by the solution writer from the definitions below:
 //   RADVIEW_UPDATE_ASSETS=1 build/radview_unit_tests --gtest_filter='BundledAssets.*'
 #include "mesh/load_file.h"
 #include "mesh/solution_file.h"
+#include "mesh/topology.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace radview {
@@ -24,6 +27,70 @@ RadiosityMesh fig98Quad() {
   for (int i = 0; i < 4; ++i) mesh.nodes.push_back({corners[i], Rgb(B[i]), {}});
   mesh.elements.push_back(Element{{0, 1, 2, 3}, {}, 0, 0});
   return mesh;
+}
+
+// A unit square (z = 0, facing +z) whose radiosity has the two kinds of discontinuity of
+// Salesin et al. 1992, on mesh lines tagged accordingly:
+//   B(x, y) = 0.5 + 0.2 sin(3x) cos(2y) + 0.8 max(0, x - 0.5) - 0.3 [y < 0.3]
+// a kink (C0) along x = 0.5 and a step (C-1) of 0.3 along y = 0.3, where each node carries
+// two values, one per side (two nodes at one position).
+double demoB(double x, double y, bool below) {
+  return 0.5 + 0.2 * std::sin(3 * x) * std::cos(2 * y) + 0.8 * std::max(0.0, x - 0.5) - (below ? 0.3 : 0.0);
+}
+
+RadiosityMesh discontinuityDemo() {
+  const std::vector<double> xs = {0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1};
+  const std::vector<double> ys = {0, 0.15, 0.3, 0.475, 0.65, 0.825, 1};
+  const size_t stepRow = 2;  // ys[2] = 0.3
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"grey", Rgb(0.5), Rgb(0.0)});
+  // node[row][column][side]: side 1 is the copy above the step line (the same node elsewhere).
+  std::vector<std::vector<std::array<uint32_t, 2>>> node(ys.size(), std::vector<std::array<uint32_t, 2>>(xs.size()));
+  for (size_t j = 0; j < ys.size(); ++j)
+    for (size_t i = 0; i < xs.size(); ++i) {
+      const bool below = j < stepRow || j == stepRow;
+      node[j][i][0] = uint32_t(mesh.nodes.size());
+      mesh.nodes.push_back({Vec3(xs[i], ys[j], 0), Rgb(demoB(xs[i], ys[j], below)), {}});
+      node[j][i][1] = node[j][i][0];
+      if (j == stepRow) {
+        node[j][i][1] = uint32_t(mesh.nodes.size());
+        mesh.nodes.push_back({Vec3(xs[i], ys[j], 0), Rgb(demoB(xs[i], ys[j], false)), {}});
+      }
+    }
+  for (size_t j = 0; j + 1 < ys.size(); ++j)
+    for (size_t i = 0; i + 1 < xs.size(); ++i) {
+      // The cell's corners, taking the copies on the cell's side of the step line.
+      const uint32_t a = node[j][i][1], b = node[j][i + 1][1], c = node[j + 1][i + 1][0], d = node[j + 1][i][0];
+      if ((i + j) % 2) {
+        mesh.elements.push_back(Element{{a, b, c}, {}, 0, 0});
+        mesh.elements.push_back(Element{{a, c, d}, {}, 0, 0});
+      } else {
+        mesh.elements.push_back(Element{{a, b, d}, {}, 0, 0});
+        mesh.elements.push_back(Element{{b, c, d}, {}, 0, 0});
+      }
+    }
+  const size_t kinkColumn = 4;  // xs[4] = 0.5
+  for (size_t j = 0; j + 1 < ys.size(); ++j)
+    mesh.discontinuities.push_back({node[j][kinkColumn][1], node[j + 1][kinkColumn][0], Continuity::C0});
+  for (size_t i = 0; i + 1 < xs.size(); ++i)
+    mesh.discontinuities.push_back({node[stepRow][i][0], node[stepRow][i + 1][0], Continuity::Cm1});
+  return mesh;
+}
+
+TEST(BundledAssets, DiscontinuityDemoHoldsItsDefinition) {
+  const std::string path = assets + "discontinuities.gltf";
+  if (std::getenv("RADVIEW_UPDATE_ASSETS")) writeSolution(discontinuityDemo(), path);
+  const LoadedFile file = loadFile(path);
+  ASSERT_TRUE(file.isSolution);
+  const RadiosityMesh want = discontinuityDemo();
+  ASSERT_EQ(file.mesh.nodes.size(), want.nodes.size());
+  for (size_t i = 0; i < want.nodes.size(); ++i)
+    EXPECT_NEAR(glm::length(file.mesh.nodes[i].B - want.nodes[i].B), 0.0, 1e-7) << i;
+  EXPECT_EQ(file.mesh.elements.size(), 96u);
+  const MeshTopology topology(file.mesh);
+  EXPECT_EQ(topology.countEdges(Continuity::C0), 6u);
+  EXPECT_EQ(topology.countEdges(Continuity::Cm1), 8u);
+  EXPECT_TRUE(topology.tVertices().empty());
 }
 
 TEST(BundledAssets, Fig98QuadHoldsItsDefinition) {

@@ -1,0 +1,27 @@
+#pragma once
+// The C1 interpolants as the GPU draws them per pixel: every Bezier piece (3 per
+// Clough-Tocher triangle, 6 per Powell-Sabin triangle) as its own triangle, each vertex
+// carrying the piece's barycentric corner and the piece's control values. The control
+// values are the same at the three vertices, so the fragment shader receives them as flat
+// varyings: on llvmpipe that costs about what Gouraud costs, where fetching them from a
+// buffer by primitive id costs 2.5 times as much (../shared/PLATFORM.md). No OpenGL here.
+#include "interp/c1_patches.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace radview::gl {
+
+struct BezierVertex {
+  glm::vec3 position;
+  glm::vec3 beta;  // the vertex's barycentric coordinates in its piece: (1,0,0), (0,1,0), (0,0,1)
+  // RGB of the control values b_ijk in bezierIndex order: 10 (cubic) or 6 (quadratic), packed
+  // three floats each into 8 vec4.
+  glm::vec4 control[8];
+};
+
+std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
+std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches);
+
+}  // namespace radview::gl

@@ -1,0 +1,27 @@
+#pragma once
+// The C1 pieces of a whole mesh, built once from its triangulation and corner gradients:
+// what the CPU interpolants evaluate and what the GPU uploads, so both show one surface.
+// Across edges tagged C0 or C-1, creases and boundaries, each side is built from its own data
+// alone (Salesin et al. 1992).
+#include "interp/clough_tocher.h"
+#include "interp/interpolant.h"
+#include "interp/powell_sabin.h"
+#include "interp/surface_triangulation.h"
+#include "interp/vertex_gradients.h"
+
+#include <vector>
+
+namespace radview {
+
+// One Clough-Tocher element per triangle of `surface` (C&W §9.2.2).
+std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulation& surface,
+                                                        const CornerGradients& gradients,
+                                                        CloughTocherVariant variant);
+
+// One Powell-Sabin element per triangle (Reichert's C1 quadratic, C&W §9.2.2): split at the
+// incenters, each edge cut where the segment joining the incenters on its two sides crosses
+// it (its midpoint where the edge is not C1), which is what makes neighbours join C1.
+std::vector<PowellSabinPatch> buildPowellSabinPatches(const SurfaceTriangulation& surface,
+                                                      const CornerGradients& gradients);
+
+}  // namespace radview
