@@ -21,8 +21,8 @@ using namespace radview;
 
 void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_option("--method", d.method,
-                     "Interpolant: flat (one value per element), gouraud (linear), c1-quadratic (Powell-Sabin) or "
-                     "clough-tocher, the last two evaluated exactly per pixel")
+                     "Interpolant: flat, gouraud (hardware, on triangles), scanline-gouraud (on the polygons, as "
+                     "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher")
       ->check(CLI::IsMember(gl::shadingMethodNames()))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,

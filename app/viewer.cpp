@@ -33,10 +33,13 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   ViewerState& s = *static_cast<Input*>(glfwGetWindowUserPointer(window))->state;
   switch (key) {
-    case GLFW_KEY_1: s.settings.method = gl::ShadingMethod::Flat; break;
-    case GLFW_KEY_2: s.settings.method = gl::ShadingMethod::Gouraud; break;
-    case GLFW_KEY_3: s.settings.method = gl::ShadingMethod::C1Quadratic; break;
-    case GLFW_KEY_4: s.settings.method = gl::ShadingMethod::CloughTocher; break;
+    case GLFW_KEY_1:
+    case GLFW_KEY_2:
+    case GLFW_KEY_3:
+    case GLFW_KEY_4:
+    case GLFW_KEY_5:
+    case GLFW_KEY_6:
+    case GLFW_KEY_7: s.settings.method = static_cast<gl::ShadingMethod>(key - GLFW_KEY_1); break;
     case GLFW_KEY_V:
       s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book ? CloughTocherVariant::AffineInvariant
                                                                                     : CloughTocherVariant::Book;

@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <string>
+
 #include <cmath>
 #include <filesystem>
 
@@ -18,7 +20,8 @@ void resetCamera(ViewerState& state) {
 }
 
 const char* shortcutHelp() {
-  return "Viewer keys: 1 flat, 2 Gouraud, 3 C1 quadratic, 4 Clough-Tocher, V its book / affine variant,\n"
+  return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
+         "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
@@ -49,12 +52,13 @@ void drawPanel(ViewerState& state) {
 
   section("Interpolant (C&W 9.2)");
   int method = static_cast<int>(state.settings.method);
-  ImGui::RadioButton("Flat [1]", &method, static_cast<int>(gl::ShadingMethod::Flat));
-  ImGui::SameLine();
-  ImGui::RadioButton("Gouraud [2]", &method, static_cast<int>(gl::ShadingMethod::Gouraud));
-  ImGui::RadioButton("C1 quadratic [3]", &method, static_cast<int>(gl::ShadingMethod::C1Quadratic));
-  ImGui::SameLine();
-  ImGui::RadioButton("Clough-Tocher [4]", &method, static_cast<int>(gl::ShadingMethod::CloughTocher));
+  static const char* const labels[] = {"Flat",     "Gouraud",      "Scanline Gouraud", "Bilinear",
+                                       "Quadratic", "C1 quadratic", "Clough-Tocher"};
+  for (int m = 0; m < 7; ++m) {
+    const std::string label = std::string(labels[m]) + " [" + std::to_string(m + 1) + "]";
+    if (m % 2) ImGui::SameLine(190);
+    ImGui::RadioButton(label.c_str(), &method, m);
+  }
   state.settings.method = static_cast<gl::ShadingMethod>(method);
   if (state.settings.method == gl::ShadingMethod::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
@@ -68,8 +72,9 @@ void drawPanel(ViewerState& state) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Edge normal, as the text reads; off: centroid to centroid (affine invariant, default)");
   }
-  if (state.settings.method == gl::ShadingMethod::C1Quadratic || state.settings.method == gl::ShadingMethod::CloughTocher)
-    ImGui::TextDisabled("exact per pixel; C0 / C-1 edges relaxed");
+  if (state.settings.method == gl::ShadingMethod::ScanlineGouraud)
+    ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
+  if (state.settings.method >= gl::ShadingMethod::Bilinear) ImGui::TextDisabled("exact per pixel");
 
   section("Display");
   float exposure = static_cast<float>(state.settings.exposure);

@@ -13,7 +13,8 @@
 namespace radview::gl {
 
 const std::vector<std::string>& shadingMethodNames() {
-  static const std::vector<std::string> names = {"flat", "gouraud", "c1-quadratic", "clough-tocher"};
+  static const std::vector<std::string> names = {"flat",      "gouraud",      "scanline-gouraud", "bilinear",
+                                                 "quadratic", "c1-quadratic", "clough-tocher"};
   return names;
 }
 
@@ -54,6 +55,11 @@ MeshRenderer::MeshRenderer() {
     glVertexArrayAttribFormat(meshVao_, attribute, 3, GL_FLOAT, GL_FALSE, offsets[attribute]);
     glVertexArrayAttribBinding(meshVao_, attribute, 0);
   }
+  glEnableVertexArrayAttrib(meshVao_, 3);
+  glVertexArrayAttribIFormat(meshVao_, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
+  glVertexArrayAttribBinding(meshVao_, 3, 0);
+  glCreateBuffers(1, &polygonCorners_);
+  glCreateBuffers(1, &polygonOffsets_);
   glCreateVertexArrays(1, &edgeVao_);
   glCreateBuffers(1, &edgeVbo_);
   glVertexArrayVertexBuffer(edgeVao_, 0, edgeVbo_, 0, sizeof(glm::vec3));
@@ -78,8 +84,8 @@ MeshRenderer::MeshRenderer() {
 MeshRenderer::~MeshRenderer() {
   GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, patchVao_};
   glDeleteVertexArrays(4, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_};
-  glDeleteBuffers(3, buffers);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_, polygonCorners_, polygonOffsets_};
+  glDeleteBuffers(5, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -92,6 +98,19 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
                     GL_STATIC_DRAW);
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+  // Element polygons (corners) for the scanline and bilinear passes, std430: vec4 position,
+  // vec4 B per corner; offsets[e] .. offsets[e+1] are element e's.
+  std::vector<glm::vec4> corners;
+  std::vector<uint32_t> offsets{0};
+  for (const Element& e : mesh.elements) {
+    for (uint32_t c : e.corners) {
+      corners.push_back(glm::vec4(glm::vec3(mesh.nodes[c].position), 1.0f));
+      corners.push_back(glm::vec4(glm::vec3(mesh.nodes[c].B), 1.0f));
+    }
+    offsets.push_back(uint32_t(corners.size() / 2));
+  }
+  glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
+  glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
   mesh_ = mesh;
   patchesFor_ = -1;
 }
@@ -99,12 +118,16 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 void MeshRenderer::uploadPatches(const RenderSettings& settings) {
   const int wanted = int(settings.method) * 2 + int(settings.cloughTocher);
   if (wanted == patchesFor_) return;
-  const SurfaceTriangulation surface(mesh_);
-  const CornerGradients gradients = vertexGradients(surface, true);
-  const std::vector<BezierVertex> vertices =
-      settings.method == ShadingMethod::CloughTocher
-          ? cloughTocherVertices(buildCloughTocherPatches(surface, gradients, settings.cloughTocher))
-          : powellSabinVertices(buildPowellSabinPatches(surface, gradients));
+  std::vector<BezierVertex> vertices;
+  if (settings.method == ShadingMethod::Quadratic) {
+    vertices = quadraticLagrangeVertices(mesh_);
+  } else {
+    const SurfaceTriangulation surface(mesh_);
+    const CornerGradients gradients = vertexGradients(surface, true);
+    vertices = settings.method == ShadingMethod::CloughTocher
+                   ? cloughTocherVertices(buildCloughTocherPatches(surface, gradients, settings.cloughTocher))
+                   : powellSabinVertices(buildPowellSabinPatches(surface, gradients));
+  }
   glNamedBufferData(patchVbo_, vertices.size() * sizeof(BezierVertex), vertices.data(), GL_STATIC_DRAW);
   patchVertices_ = static_cast<GLsizei>(vertices.size());
   patchesFor_ = wanted;
@@ -144,6 +167,15 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     meshProgram_.set("method", static_cast<int>(settings.method));
     meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
     meshProgram_.use();
+    glBindVertexArray(meshVao_);
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  } else if (settings.method == ShadingMethod::ScanlineGouraud || settings.method == ShadingMethod::Bilinear) {
+    polygonProgram_.set("clipFromWorld", clipFromWorld);
+    polygonProgram_.set("viewportSize", glm::vec2(width, height));
+    polygonProgram_.set("mode", settings.method == ShadingMethod::ScanlineGouraud ? 0 : 1);
+    polygonProgram_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else {

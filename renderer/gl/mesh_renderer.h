@@ -1,7 +1,8 @@
 #pragma once
-// Draws a radiosity mesh: flat or Gouraud shading (perspective-correct or screen-space), or
-// the C1 interpolants evaluated exactly per pixel; exposure and sRGB tone mapping; the
-// element-edge overlay. Needs a current OpenGL 4.5
+// Draws a radiosity mesh with any interpolant of C&W §9.2: flat, Gouraud on triangles
+// (perspective-correct or screen-space), scanline Gouraud on the element polygons (fig. 9.7),
+// and bilinear, quadratic, C1 quadratic and Clough-Tocher evaluated exactly per pixel; exposure
+// and sRGB tone mapping; the element-edge overlay. Needs a current OpenGL 4.5
 // core context (EglContext, or the viewer's window).
 #include "core/camera.h"
 #include "core/image.h"
@@ -18,8 +19,17 @@
 
 namespace radview::gl {
 
-enum class ShadingMethod : int { Flat = 0, Gouraud = 1, C1Quadratic = 2, CloughTocher = 3 };
-// "flat", "gouraud", "c1-quadratic", "clough-tocher" (by enum value)
+enum class ShadingMethod : int {
+  Flat,
+  Gouraud,          // the hardware's interpolation on the element's triangles
+  ScanlineGouraud,  // down the polygon's edges, then across the scanline (view dependent)
+  Bilinear,
+  Quadratic,
+  C1Quadratic,
+  CloughTocher,
+};
+// "flat", "gouraud", "scanline-gouraud", "bilinear", "quadratic", "c1-quadratic",
+// "clough-tocher" (by enum value)
 const std::vector<std::string>& shadingMethodNames();
 ShadingMethod shadingMethodFromName(const std::string& name);  // throws Error
 
@@ -57,9 +67,12 @@ class MeshRenderer {
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
   ShaderProgram bezierProgram_{{"bezier.vert", "bezier.frag"}};
+  ShaderProgram polygonProgram_{{"polygon.vert", "polygon.frag"}};
+  GLuint polygonCorners_ = 0, polygonOffsets_ = 0;  // storage buffers: element polygons
   GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
-  // The C1 pieces, built when a C1 method is first drawn (and again when its variant changes).
+  // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
+  // the method or the Clough-Tocher variant changes).
   void uploadPatches(const RenderSettings& settings);
   RadiosityMesh mesh_;
   GLuint patchVao_ = 0, patchVbo_ = 0;

@@ -1,5 +1,7 @@
 #include "gl/patch_vertices.h"
 
+#include "mesh/display_mesh.h"
+
 namespace radview::gl {
 
 namespace {
@@ -18,6 +20,28 @@ void addPiece(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners
 }
 
 }  // namespace
+
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh) {
+  std::vector<BezierVertex> out;
+  auto position = [&](uint32_t n) { return mesh.nodes[n].position; };
+  auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
+  for (size_t e = 0; e < mesh.elements.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    if (element.order() == ElementOrder::Quadratic && element.corners.size() == 3) {
+      const auto& c = element.corners;
+      const auto& m = element.midEdge;  // m[i] on edge c[i] -> c[i+1]
+      const Rgb f0 = B(c[0]), f1 = B(c[1]), f2 = B(c[2]);
+      // bezierIndex order for n = 2: b200 b110 b101 b020 b011 b002.
+      const std::array<Rgb, 6> net = {f0, 2.0 * B(m[0]) - 0.5 * (f0 + f1), 2.0 * B(m[2]) - 0.5 * (f0 + f2),
+                                      f1, 2.0 * B(m[1]) - 0.5 * (f1 + f2), f2};
+      addPiece(out, {position(c[0]), position(c[1]), position(c[2])}, net);
+      continue;
+    }
+    for (const auto& t : elementTriangles(mesh, e))
+      addPiece(out, {position(t[0]), position(t[1]), position(t[2])}, linearBezierNet<6>({B(t[0]), B(t[1]), B(t[2])}));
+  }
+  return out;
+}
 
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches) {
   std::vector<BezierVertex> out;

@@ -21,6 +21,12 @@ struct BezierVertex {
   glm::vec4 control[8];
 };
 
+// Quadratic Lagrange elements (C&W §9.2) as quadratic Bezier nets: a 6-node triangle with
+// corner values f_i and mid-edge values m_ij is the net b_200 = f_0, b_110 = 2 m_01 - (f_0 +
+// f_1) / 2, ... Other elements are drawn linear (over the triangles of elementTriangles), as
+// the degree-2 net of a linear function; quadratic quads too (their serendipity form is not a
+// triangle patch; the CPU reference has it).
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches);
 

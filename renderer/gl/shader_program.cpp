@@ -119,6 +119,9 @@ ShaderProgram::~ShaderProgram() { glDeleteProgram(program_); }
 
 void ShaderProgram::set(const char* name, int value) const { glProgramUniform1i(program_, location(name), value); }
 void ShaderProgram::set(const char* name, float value) const { glProgramUniform1f(program_, location(name), value); }
+void ShaderProgram::set(const char* name, const glm::vec2& v) const {
+  glProgramUniform2fv(program_, location(name), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const char* name, const glm::vec3& v) const {
   glProgramUniform3fv(program_, location(name), 1, glm::value_ptr(v));
 }

@@ -25,6 +25,7 @@ class ShaderProgram {
   void use() const { glUseProgram(program_); }
   void set(const char* name, int value) const;
   void set(const char* name, float value) const;
+  void set(const char* name, const glm::vec2& value) const;
   void set(const char* name, const glm::vec3& value) const;
   void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, const glm::mat4& value) const;

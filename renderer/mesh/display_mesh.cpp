@@ -48,7 +48,9 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
     const Element& element = mesh.elements[e];
     const Rgb Bflat = mesh.meanB(e);
     for (const auto& t : elementTriangles(mesh, e))
-      for (uint32_t node : t) out.triangles.push_back({toFloat(mesh.nodes[node].position), toFloat(mesh.nodes[node].B), toFloat(Bflat)});
+      for (uint32_t node : t)
+        out.triangles.push_back(
+            {toFloat(mesh.nodes[node].position), toFloat(mesh.nodes[node].B), toFloat(Bflat), uint32_t(e)});
     const auto& c = element.corners;
     const size_t n = c.size();
     for (size_t i = 0; i < n; ++i) {

@@ -16,6 +16,7 @@ struct DisplayVertex {
   glm::vec3 position;
   glm::vec3 B;      // the node's radiosity
   glm::vec3 Bflat;  // the mean of the element's nodal values (flat shading: RadiosityMesh::meanB)
+  uint32_t element;
 };
 
 struct DisplayMesh {

@@ -6,15 +6,16 @@
 // one-sided difference itself, not a finite-difference estimate.
 //
 // Round-off bounds (measured maxima in brackets, over the seeds and meshes below):
-//   gradient jump across a C1 edge <= 1000 eps * max|B| * A / h   [70]
+//   gradient jump across a C1 edge <= 1000 eps * max|B| * A / h   [80]
 //   value jump across a C1 or C0 edge <= 100 eps * max|B| * A      [7]
 // max|B| over the two elements' nodes; A the largest aspect ratio and h the smallest height
 // (elementAspect, elementHeight) among the elements around the edge's two elements'
 // vertices: on a sliver, and next to one, barycentric coordinates are good to ~eps * A, and
 // Powell-Sabin's split points next to a sliver put thin pieces into its neighbours too.
-// Relative to the data's largest gradient that is <= 1e-12 on the jittered meshes and <= 1e-8
-// on the sliver meshes (aspect up to 1e4), with exact or estimated gradients. Linear, bilinear and
-// quadratic jump by more than 1e6 of that bound on the same meshes (measured: 1e9 .. 1e13).
+// Relative to the data's largest gradient that is <= 4e-13 on the jittered meshes and <= 2e-7
+// on the sliver meshes (aspect up to 1e4), with exact or estimated gradients. Linear,
+// bilinear and quadratic jump by more than 1e6 times that bound on the same meshes (measured:
+// 1e10 and more).
 #include "interp/interpolant.h"
 #include "tests/interp/test_meshes.h"
 

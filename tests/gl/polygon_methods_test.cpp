@@ -1,0 +1,98 @@
+// Scanline Gouraud, bilinear and quadratic on the GPU: fig. 9.8's orientation dependence on
+// pixel values, and agreement with the CPU reference per pixel.
+#include "core/camera.h"
+#include "gl/egl_context.h"
+#include "gl/mesh_renderer.h"
+#include "interp/interpolant.h"
+#include "mesh/load_file.h"
+#include "tests/gl/pixel_reference.h"
+
+#include <gtest/gtest.h>
+
+namespace radview::gl {
+namespace {
+
+const std::string fig98 = std::string(RADVIEW_SOURCE_DIR) + "/assets/fig9_8_quad.gltf";
+
+// The fig. 9.8 quad seen face on, the view turned `steps` x 45 degrees clockwise.
+Camera faceOn(int steps) {
+  Camera c;
+  c.eye = {0, 0, 2};
+  c.target = {0, 0, 0};
+  c.zNear = 0.1;
+  c.zFar = 10;
+  roll(c, glm::radians(45.0 * steps));
+  return c;
+}
+
+// The red channel at the centre of a 65x65 (odd, so a pixel centre sits on the axis) render.
+float centreValue(ShadingMethod method, int steps) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(loadFile(fig98).mesh);
+  RenderSettings settings;
+  settings.method = method;
+  renderer.render(faceOn(steps), settings, 65, 65);
+  return renderer.readLinear().rgba[(32 * 65 + 32) * 4];
+}
+
+TEST(PolygonMethods, ScanlineGouraudChangesWithTheViewAsInFig98) {
+  // Corners 0.9 0.1 0.7 0.3 (float32). Upright, the centre's scanline joins the left and
+  // right edges: their mean, 0.5. Turned 45 degrees one way, the scanline through the centre
+  // joins two opposite corners: (0.9 + 0.7) / 2 or (0.1 + 0.3) / 2 -- the picture changes.
+  const float upright = centreValue(ShadingMethod::ScanlineGouraud, 0);
+  const float turned = centreValue(ShadingMethod::ScanlineGouraud, 1);
+  const float turnedTwice = centreValue(ShadingMethod::ScanlineGouraud, 2);
+  EXPECT_NEAR(upright, 0.5f, 1e-3f);
+  EXPECT_TRUE(std::abs(turned - 0.8f) < 1e-3f || std::abs(turned - 0.2f) < 1e-3f) << turned;
+  EXPECT_NEAR(turnedTwice, 0.5f, 1e-3f);
+}
+
+TEST(PolygonMethods, BilinearIsTheSameAtEveryOrientation) {
+  for (int steps = 0; steps < 3; ++steps) EXPECT_NEAR(centreValue(ShadingMethod::Bilinear, steps), 0.5f, 1e-5f) << steps;
+}
+
+// Per pixel against the CPU on an oblique view of the quad (perspective matters).
+test::PixelComparison obliqueComparison(ShadingMethod gpu, const RadiosityMesh& mesh, const Interpolant& cpu) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(mesh);
+  Camera camera;
+  camera.eye = {0.3, -1.1, 0.9};
+  camera.target = {0, 0, 0};
+  camera.up = {0, 0, 1};
+  camera.zNear = 0.1;
+  camera.zFar = 10;
+  RenderSettings settings;
+  settings.method = gpu;
+  renderer.render(camera, settings, 100, 100);
+  return test::compareWithReference(renderer.readLinear(), camera, mesh, cpu, 2e-5);  // float32 pieces
+}
+
+TEST(PolygonMethods, BilinearPerPixelIsTheCpuReference) {
+  // An irregular quad, so the bilinear map is not affine.
+  RadiosityMesh mesh = loadFile(fig98).mesh;
+  mesh.nodes[2].position = {0.7, 0.4, 0.0};
+  const test::PixelComparison c = obliqueComparison(ShadingMethod::Bilinear, mesh, *makeInterpolant(mesh, Method::Bilinear));
+  EXPECT_GT(c.pixels, 1000u);
+  EXPECT_EQ(c.withinTolerance, c.pixels);
+}
+
+TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
+  // Two quadratic triangles: corners and mid-edge nodes with unrelated values.
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
+  const Vec3 p[] = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0},
+                    {0, -0.5, 0},    {0.5, 0, 0},    {0, 0, 0},     {0, 0.5, 0},  {-0.5, 0, 0}};
+  const double B[] = {0.2, 0.9, 0.4, 0.6, 0.1, 0.8, 0.95, 0.3, 0.5};
+  for (int i = 0; i < 9; ++i) mesh.nodes.push_back({p[i], Rgb(B[i], 1 - B[i], 0.5), {}});
+  mesh.elements.push_back(Element{{0, 1, 2}, {4, 5, 6}, 0, 0});
+  mesh.elements.push_back(Element{{0, 2, 3}, {6, 7, 8}, 0, 0});
+  const test::PixelComparison c =
+      obliqueComparison(ShadingMethod::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
+  EXPECT_GT(c.pixels, 1000u);
+  EXPECT_EQ(c.withinTolerance, c.pixels);
+}
+
+}  // namespace
+}  // namespace radview::gl
