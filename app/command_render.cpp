@@ -27,6 +27,8 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   settings.perspectiveCorrect = !display.screenSpace;
   settings.exposure = display.exposure;
   settings.elementEdges = display.edges;
+  settings.discontinuityEdges = display.discontinuities;
+  settings.tVertices = display.tVertices;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
 

@@ -11,6 +11,8 @@ struct DisplayOptions {
   double exposure = 0.0;     // stops
   std::string camera;        // preset or eye/target/up; empty: the file's camera, else front
   bool edges = false;
+  bool discontinuities = false;  // overlay discontinuity edges, coloured by order
+  bool tVertices = false;        // overlay T-vertex markers
   std::string variant = "affine";  // clough-tocher: affine or book
   double elementSize = 0.0;        // scenes only; 0 picks a default
 };

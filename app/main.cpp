@@ -34,6 +34,9 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
                      "A preset (" + joined(cameraPresetNames()) + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
                      "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
+  command.add_flag("--discontinuities", d.discontinuities,
+                   "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
+  command.add_flag("--t-vertices", d.tVertices, "Overlay T-vertices as magenta markers");
   command.add_option("--variant", d.variant,
                      "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
       ->check(CLI::IsMember({"affine", "book"}))

@@ -46,6 +46,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
       break;
     case GLFW_KEY_P: s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect; break;
     case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
+    case GLFW_KEY_D: s.settings.discontinuityEdges = !s.settings.discontinuityEdges; break;
+    case GLFW_KEY_T: s.settings.tVertices = !s.settings.tVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
     case GLFW_KEY_F: resetCamera(s); break;
     case GLFW_KEY_S: s.screenshotRequested = true; break;
@@ -168,6 +170,8 @@ int runViewer(const ViewerOptions& options) {
   state.settings.perspectiveCorrect = !options.display.screenSpace;
   state.settings.exposure = options.display.exposure;
   state.settings.elementEdges = options.display.edges;
+  state.settings.discontinuityEdges = options.display.discontinuities;
+  state.settings.tVertices = options.display.tVertices;
   state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);

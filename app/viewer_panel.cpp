@@ -1,5 +1,7 @@
 #include "app/viewer_panel.h"
 
+#include "mesh/display_mesh.h"
+
 #include <imgui.h>
 
 #include <string>
@@ -22,7 +24,7 @@ void resetCamera(ViewerState& state) {
 const char* shortcutHelp() {
   return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
          "7 Clough-Tocher, V its book / affine variant,\n"
-         "P perspective-correct / screen-space Gouraud, E element edges,\n"
+         "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -48,7 +50,6 @@ void drawPanel(ViewerState& state) {
   ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
   ImGui::Text("%s: %zu nodes, %zu elements", viewed.file.isSolution ? "solution" : "scene (direct light)",
               viewed.mesh.nodes.size(), viewed.mesh.elements.size());
-  ImGui::Text("T-vertices: %zu", viewed.tVertexCount);
 
   section("Interpolant (C&W 9.2)");
   int method = static_cast<int>(state.settings.method);
@@ -82,6 +83,13 @@ void drawPanel(ViewerState& state) {
   if (ImGui::SliderFloat("Exposure, stops", &exposure, -10.0f, 10.0f, "%.1f")) state.settings.exposure = exposure;
   ImGui::PopItemWidth();
   ImGui::Checkbox("Element edges [E]", &state.settings.elementEdges);
+  ImGui::Checkbox("Discontinuity edges [D]", &state.settings.discontinuityEdges);
+  ImGui::SameLine();
+  ImGui::TextColored(ImVec4(kDiscontinuityCm1Color.r, kDiscontinuityCm1Color.g, kDiscontinuityCm1Color.b, 1), "C-1");
+  ImGui::SameLine();
+  ImGui::TextColored(ImVec4(kDiscontinuityC0Color.r, kDiscontinuityC0Color.g, kDiscontinuityC0Color.b, 1), "C0");
+  const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
+  ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
 
   section("View");
   if (ImGui::Button("Rotate 45 deg [R]")) rotateView45(state);

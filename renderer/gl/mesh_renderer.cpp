@@ -58,6 +58,15 @@ MeshRenderer::MeshRenderer() {
   glEnableVertexArrayAttrib(meshVao_, 3);
   glVertexArrayAttribIFormat(meshVao_, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
   glVertexArrayAttribBinding(meshVao_, 3, 0);
+  glCreateVertexArrays(1, &overlayVao_);
+  glCreateBuffers(1, &overlayVbo_);
+  glVertexArrayVertexBuffer(overlayVao_, 0, overlayVbo_, 0, sizeof(OverlayVertex));
+  glEnableVertexArrayAttrib(overlayVao_, 0);
+  glVertexArrayAttribFormat(overlayVao_, 0, 3, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, position));
+  glVertexArrayAttribBinding(overlayVao_, 0, 0);
+  glEnableVertexArrayAttrib(overlayVao_, 1);
+  glVertexArrayAttribFormat(overlayVao_, 1, 4, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, color));
+  glVertexArrayAttribBinding(overlayVao_, 1, 0);
   glCreateBuffers(1, &polygonCorners_);
   glCreateBuffers(1, &polygonOffsets_);
   glCreateVertexArrays(1, &edgeVao_);
@@ -82,10 +91,10 @@ MeshRenderer::MeshRenderer() {
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, patchVao_};
-  glDeleteVertexArrays(4, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_, polygonCorners_, polygonOffsets_};
-  glDeleteBuffers(5, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, patchVao_, overlayVao_};
+  glDeleteVertexArrays(5, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_, polygonCorners_, polygonOffsets_, overlayVbo_};
+  glDeleteBuffers(6, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -96,6 +105,11 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
                     GL_STATIC_DRAW);
   glNamedBufferData(edgeVbo_, display.elementEdges.size() * sizeof(glm::vec3), display.elementEdges.data(),
                     GL_STATIC_DRAW);
+  std::vector<OverlayVertex> overlay = display.discontinuityEdges;
+  overlay.insert(overlay.end(), display.tVertices.begin(), display.tVertices.end());
+  glNamedBufferData(overlayVbo_, overlay.size() * sizeof(OverlayVertex), overlay.data(), GL_STATIC_DRAW);
+  discontinuityVertices_ = static_cast<GLsizei>(display.discontinuityEdges.size());
+  tVertexMarkers_ = static_cast<GLsizei>(display.tVertices.size());
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
   // Element polygons (corners) for the scanline and bilinear passes, std430: vec4 position,
@@ -209,6 +223,22 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     linesProgram_.use();
     glBindVertexArray(edgeVao_);
     glDrawArrays(GL_LINES, 0, edgeVertices_);
+    glDepthMask(GL_TRUE);
+  }
+  if ((settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0)) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    overlayProgram_.set("clipFromWorld", clipFromWorld);
+    overlayProgram_.set("pointSize", 7.0f);
+    overlayProgram_.use();
+    glBindVertexArray(overlayVao_);
+    // Wide lines are not in the core profile: the edges are one pixel, drawn over the element
+    // edges so their colour wins.
+    if (settings.discontinuityEdges) glDrawArrays(GL_LINES, 0, discontinuityVertices_);
+    if (settings.tVertices) glDrawArrays(GL_POINTS, discontinuityVertices_, tVertexMarkers_);
+    glDisable(GL_PROGRAM_POINT_SIZE);
     glDepthMask(GL_TRUE);
   }
   glEndQuery(GL_TIME_ELAPSED);

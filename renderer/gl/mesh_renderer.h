@@ -39,6 +39,8 @@ struct RenderSettings {
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
   double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
   bool elementEdges = false;
+  bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
+  bool tVertices = false;           // markers
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -60,6 +62,7 @@ class MeshRenderer {
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
   double gpuFrameMs() const { return gpuFrameMs_; }
   size_t triangleCount() const { return triangleVertices_ / 3; }
+  size_t tVertexCount() const { return size_t(tVertexMarkers_); }
 
  private:
   RenderTargets targets_;
@@ -68,6 +71,9 @@ class MeshRenderer {
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
   ShaderProgram bezierProgram_{{"bezier.vert", "bezier.frag"}};
   ShaderProgram polygonProgram_{{"polygon.vert", "polygon.frag"}};
+  ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
+  GLuint overlayVao_ = 0, overlayVbo_ = 0;
+  GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
   GLuint polygonCorners_ = 0, polygonOffsets_ = 0;  // storage buffers: element polygons
   GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;

@@ -1,6 +1,7 @@
 #include "mesh/display_mesh.h"
 
 #include "geom/polygon.h"
+#include "mesh/topology.h"
 
 #include <algorithm>
 #include <set>
@@ -62,6 +63,15 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
       }
     }
   }
+  for (const DiscontinuityEdge& d : mesh.discontinuities) {
+    if (d.order == Continuity::C1) continue;
+    const glm::vec4 color = d.order == Continuity::Cm1 ? kDiscontinuityCm1Color : kDiscontinuityC0Color;
+    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.a].position), color});
+    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.b].position), color});
+  }
+  const MeshTopology topology(mesh);
+  for (const TVertex& t : topology.tVertices())
+    out.tVertices.push_back({toFloat(mesh.nodes[t.node].position), kTVertexColor});
   return out;
 }
 

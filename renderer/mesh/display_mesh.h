@@ -19,9 +19,21 @@ struct DisplayVertex {
   uint32_t element;
 };
 
+struct OverlayVertex {
+  glm::vec3 position;
+  glm::vec4 color;
+};
+
+// Overlay colours, also the panel's legend.
+inline constexpr glm::vec4 kDiscontinuityCm1Color{1.0f, 0.25f, 0.2f, 1.0f};  // C-1: value jumps
+inline constexpr glm::vec4 kDiscontinuityC0Color{1.0f, 0.85f, 0.1f, 1.0f};   // C0: derivative jumps
+inline constexpr glm::vec4 kTVertexColor{1.0f, 0.1f, 1.0f, 1.0f};
+
 struct DisplayMesh {
   std::vector<DisplayVertex> triangles;  // three vertices per triangle
   std::vector<glm::vec3> elementEdges;   // two points per segment, each element edge once
+  std::vector<OverlayVertex> discontinuityEdges;  // two per segment, coloured by order; C1 tags not drawn
+  std::vector<OverlayVertex> tVertices;           // one marker each (MeshTopology::tVertices)
 };
 
 // Linear elements are triangulated over their corners (triangulatePolygon: a fan when

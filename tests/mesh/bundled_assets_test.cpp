@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <cstdlib>
 
@@ -91,6 +92,43 @@ TEST(BundledAssets, DiscontinuityDemoHoldsItsDefinition) {
   EXPECT_EQ(topology.countEdges(Continuity::C0), 6u);
   EXPECT_EQ(topology.countEdges(Continuity::Cm1), 8u);
   EXPECT_TRUE(topology.tVertices().empty());
+}
+
+// Adaptive subdivision's leftover (C&W §9.2): a unit square, 2 x 2 quads on the left half and
+// 4 x 4 on the right, so the right half's nodes on x = 0.5 are T-vertices of the left quads.
+// B = 0.3 + 0.6 exp(-20 ((x - 0.5)^2 + (y - 0.4)^2)), a highlight on the seam, so the values
+// at the T-vertices differ from what the coarse side's edges interpolate there.
+RadiosityMesh tVertexDemo() {
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"grey", Rgb(0.5), Rgb(0.0)});
+  std::map<std::pair<int, int>, uint32_t> node;  // position in 1/8 units -> node
+  auto at = [&](int i, int j) {
+    auto it = node.find({i, j});
+    if (it != node.end()) return it->second;
+    const double x = i / 8.0, y = j / 8.0;
+    const double B = 0.3 + 0.6 * std::exp(-20.0 * ((x - 0.5) * (x - 0.5) + (y - 0.4) * (y - 0.4)));
+    mesh.nodes.push_back({Vec3(x, y, 0), Rgb(B, B, B), {}});
+    return node[{i, j}] = uint32_t(mesh.nodes.size() - 1);
+  };
+  auto quad = [&](int i, int j, int size) {
+    mesh.elements.push_back(Element{{at(i, j), at(i + size, j), at(i + size, j + size), at(i, j + size)}, {}, 0, 0});
+  };
+  for (int j = 0; j < 8; j += 4)
+    for (int i = 0; i < 4; i += 4) quad(i, j, 4);
+  for (int j = 0; j < 8; j += 2)
+    for (int i = 4; i < 8; i += 2) quad(i, j, 2);
+  return mesh;
+}
+
+TEST(BundledAssets, TVertexDemoHoldsItsDefinition) {
+  const std::string path = assets + "t_vertices.gltf";
+  if (std::getenv("RADVIEW_UPDATE_ASSETS")) writeSolution(tVertexDemo(), path);
+  const LoadedFile file = loadFile(path);
+  ASSERT_TRUE(file.isSolution);
+  EXPECT_EQ(file.mesh.nodes.size(), tVertexDemo().nodes.size());
+  EXPECT_EQ(file.mesh.elements.size(), 10u);
+  // (0.5, 0.25) and (0.5, 0.75) lie inside the left quads' right edges.
+  EXPECT_EQ(MeshTopology(file.mesh).tVertices().size(), 2u);
 }
 
 TEST(BundledAssets, Fig98QuadHoldsItsDefinition) {

@@ -1,0 +1,12 @@
+#version 450 core
+// Overlay lines and markers with a colour per vertex (discontinuity edges, T-vertices).
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec4 color;
+uniform mat4 clipFromWorld;
+uniform float pointSize;
+out vec4 vColor;
+void main() {
+  gl_Position = clipFromWorld * vec4(position, 1.0);
+  gl_PointSize = pointSize;
+  vColor = color;
+}
