@@ -52,7 +52,16 @@ Vec3 BarycentricFrame::operator()(const Vec3& x) const {
     lambda[b] = t;
     return lambda;
   }
-  const Vec3 lambda(glm::dot(grad[0], x - V[1]), glm::dot(grad[1], x - V[2]), glm::dot(grad[2], x - V[0]));
+  // lambda_i vanishes on the edge V[i+1] V[i+2]; measured from the nearer of the two, it is
+  // exactly 0 at both, so every vertex gets exactly its unit coordinates (and a dim node its
+  // own value, however bright its neighbours).
+  auto coordinate = [&](int i) {
+    const Vec3& a = V[(i + 1) % 3];
+    const Vec3& b = V[(i + 2) % 3];
+    const Vec3 from = glm::dot(x - a, x - a) <= glm::dot(x - b, x - b) ? a : b;
+    return glm::dot(grad[i], x - from);
+  };
+  const Vec3 lambda(coordinate(0), coordinate(1), coordinate(2));
   // The sum is 1 up to round-off; dividing makes the coordinates affine to the last bit, so a
   // polynomial patch (homogeneous in lambda) is not scaled by (sum)^n.
   return lambda / (lambda.x + lambda.y + lambda.z);

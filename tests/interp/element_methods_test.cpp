@@ -53,6 +53,22 @@ TEST(ElementMethods, EveryMethodInterpolatesTheNodalValuesAtNodes) {
     }
 }
 
+TEST(ElementMethods, DimNodesKeepTheirOwnValueNextToBrightOnes) {
+  // Values from 1e-8 to 1e8 in one element: at each node every method returns that node's
+  // value to its own relative precision, not to the precision of the brightest neighbour.
+  RadiosityMesh mesh = gridMesh(3, false, 0.3, quadraticField, 11);
+  for (size_t i = 0; i < mesh.nodes.size(); ++i) mesh.nodes[i].B = Rgb(i % 2 ? 1e8 : 1e-8, 1.0, i % 3 ? 1e-8 : 1e8);
+  for (Method method : {Method::Linear, Method::Bilinear, Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
+    const auto interpolant = makeInterpolant(mesh, method);
+    for (uint32_t e = 0; e < mesh.elements.size(); ++e)
+      for (uint32_t n : mesh.elements[e].corners) {
+        const Rgb got = interpolant->evaluate(e, mesh.nodes[n].position).B, want = mesh.nodes[n].B;
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(got[c], want[c], 1e-12 * want[c]) << methodNames()[int(method)] << " element " << e << " node " << n;
+      }
+  }
+}
+
 TEST(ElementMethods, FlatIsTheElementMean) {
   const RadiosityMesh mesh = gridMesh(3, true, 0.2, quadraticField, 3);
   const auto flat = makeInterpolant(mesh, Method::Flat);
