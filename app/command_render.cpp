@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "interp/tessellation_level.h"
 
 #include <cstdio>
 #include <regex>
@@ -20,6 +21,21 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw Error("--size '" + text + "': each side must be within 1..16384");
 }
 
+int parseTessellation(const std::string& text) {
+  if (text == "exact") return 0;
+  if (text == "adaptive") return gl::kAdaptiveTessellation;
+  size_t used = 0;
+  int level = 0;
+  try {
+    level = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || level < 1 || level > kMaxTessellationLevel)
+    throw Error("--tessellation '" + text + "': expected exact, adaptive or a level 1..64");
+  return level;
+}
+
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out) {
   gl::RenderSettings settings;
@@ -30,6 +46,8 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   settings.discontinuityEdges = display.discontinuities;
   settings.tVertices = display.tVertices;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
+  settings.tessellation = parseTessellation(display.tessellation);
+  settings.tessellationTolerance = display.tolerance / 255.0;
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
 
   gl::EglContext context;

@@ -14,6 +14,8 @@ struct DisplayOptions {
   bool discontinuities = false;  // overlay discontinuity edges, coloured by order
   bool tVertices = false;        // overlay T-vertex markers
   std::string variant = "affine";  // clough-tocher: affine or book
+  std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
+  double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
   double elementSize = 0.0;        // scenes only; 0 picks a default
 };
 
@@ -35,6 +37,8 @@ struct SampleOptions {
   std::string points;          // a file, '-' for standard input, or the points themselves
   std::string diagonal = "02";  // linear: the quad diagonal, 02 or 13
   std::string variant = "affine";  // clough-tocher: affine or book
+  std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
+  double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
   bool estimateGradients = false;  // ignore gradients stored in the file
   double maxDistance = -1.0;       // world points farther from every element are errors
   double elementSize = 0.0;
@@ -56,6 +60,8 @@ int runSample(const SampleOptions& options);
 int runViewer(const ViewerOptions& options);
 
 struct ViewedFile;
+// --tessellation as gl::RenderSettings::tessellation. Throws Error.
+int parseTessellation(const std::string& text);
 // Renders through EGL to a PNG at `out` and prints its path.
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out);

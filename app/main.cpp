@@ -37,6 +37,13 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
   command.add_flag("--t-vertices", d.tVertices, "Overlay T-vertices as magenta markers");
+  command.add_option("--tessellation", d.tessellation,
+                     "quadratic, c1-quadratic, clough-tocher: exact (evaluated per pixel), adaptive (GPU-"
+                     "tessellated until the display error is under --tolerance), or a fixed level 1..64")
+      ->capture_default_str();
+  command.add_option("--tolerance", d.tolerance, "Adaptive tessellation: largest display error, in 8-bit steps")
+      ->check(CLI::Range(0.01, 100.0))
+      ->capture_default_str();
   command.add_option("--variant", d.variant,
                      "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
       ->check(CLI::IsMember({"affine", "book"}))

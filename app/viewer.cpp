@@ -173,6 +173,8 @@ int runViewer(const ViewerOptions& options) {
   state.settings.discontinuityEdges = options.display.discontinuities;
   state.settings.tVertices = options.display.tVertices;
   state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
+  state.settings.tessellation = parseTessellation(options.display.tessellation);
+  state.settings.tessellationTolerance = options.display.tolerance / 255.0;
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
   adoptViewedFile(state, std::move(viewed));
@@ -226,6 +228,7 @@ int runViewer(const ViewerOptions& options) {
         state.status = e.what();
       }
       state.gpuFrameMs = renderer.gpuFrameMs();
+      state.tessellation = renderer.tessellationStatistics();
       state.triangles = renderer.triangleCount();
     }
     ImGui_ImplOpenGL3_NewFrame();

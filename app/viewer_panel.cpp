@@ -75,7 +75,32 @@ void drawPanel(ViewerState& state) {
   }
   if (state.settings.method == gl::ShadingMethod::ScanlineGouraud)
     ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
-  if (state.settings.method >= gl::ShadingMethod::Bilinear) ImGui::TextDisabled("exact per pixel");
+  if (state.settings.method == gl::ShadingMethod::Bilinear) ImGui::TextDisabled("exact per pixel");
+  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+    // Exact per pixel, a fixed tessellation level, or the adaptive level (C&W 9.2).
+    int mode = state.settings.tessellation == 0 ? 0 : state.settings.tessellation == gl::kAdaptiveTessellation ? 2 : 1;
+    ImGui::RadioButton("Per pixel", &mode, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Fixed level", &mode, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("Adaptive", &mode, 2);
+    if (mode == 0) state.settings.tessellation = 0;
+    if (mode == 2) state.settings.tessellation = gl::kAdaptiveTessellation;
+    if (mode == 1) {
+      int level = state.settings.tessellation > 0 ? state.settings.tessellation : 4;
+      ImGui::PushItemWidth(200);
+      ImGui::SliderInt("Level", &level, 1, 64);
+      ImGui::PopItemWidth();
+      state.settings.tessellation = level;
+    }
+    if (mode == 2) {
+      float steps = float(state.settings.tessellationTolerance * 255.0);
+      ImGui::PushItemWidth(200);
+      if (ImGui::SliderFloat("Tolerance, 8-bit steps", &steps, 0.05f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+        state.settings.tessellationTolerance = steps / 255.0;
+      ImGui::PopItemWidth();
+    }
+  }
 
   section("Display");
   float exposure = static_cast<float>(state.settings.exposure);
@@ -109,7 +134,13 @@ void drawPanel(ViewerState& state) {
 
   section("Frame");
   ImGui::Text("GPU %.2f ms   CPU %.2f ms", state.gpuFrameMs, state.cpuFrameMs);
-  ImGui::Text("%zu triangles", state.triangles);
+  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+    const gl::TessellationStatistics& t = state.tessellation;
+    ImGui::Text("%zu patches, %zu draws, mean level %.2f", t.patches, t.draws, t.averageLevel);
+    ImGui::Text("%zu triangles generated", t.trianglesGenerated);
+  } else {
+    ImGui::Text("%zu triangles", state.triangles);
+  }
   if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
   if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(shortcutHelp());
   ImGui::End();

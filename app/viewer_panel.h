@@ -21,6 +21,7 @@ struct ViewerState {
   double cpuFrameMs = 0.0;
   double gpuFrameMs = 0.0;
   size_t triangles = 0;
+  gl::TessellationStatistics tessellation;  // of the last quadratic or C1 frame
 };
 
 void rotateView45(ViewerState& state);

@@ -58,6 +58,14 @@ MeshRenderer::MeshRenderer() {
   glEnableVertexArrayAttrib(meshVao_, 3);
   glVertexArrayAttribIFormat(meshVao_, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
   glVertexArrayAttribBinding(meshVao_, 3, 0);
+
+  glCreateVertexArrays(1, &edgeVao_);
+  glCreateBuffers(1, &edgeVbo_);
+  glVertexArrayVertexBuffer(edgeVao_, 0, edgeVbo_, 0, sizeof(glm::vec3));
+  glEnableVertexArrayAttrib(edgeVao_, 0);
+  glVertexArrayAttribFormat(edgeVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(edgeVao_, 0, 0);
+
   glCreateVertexArrays(1, &overlayVao_);
   glCreateBuffers(1, &overlayVbo_);
   glVertexArrayVertexBuffer(overlayVao_, 0, overlayVbo_, 0, sizeof(OverlayVertex));
@@ -67,34 +75,18 @@ MeshRenderer::MeshRenderer() {
   glEnableVertexArrayAttrib(overlayVao_, 1);
   glVertexArrayAttribFormat(overlayVao_, 1, 4, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, color));
   glVertexArrayAttribBinding(overlayVao_, 1, 0);
+
   glCreateBuffers(1, &polygonCorners_);
   glCreateBuffers(1, &polygonOffsets_);
-  glCreateVertexArrays(1, &edgeVao_);
-  glCreateBuffers(1, &edgeVbo_);
-  glVertexArrayVertexBuffer(edgeVao_, 0, edgeVbo_, 0, sizeof(glm::vec3));
-  glEnableVertexArrayAttrib(edgeVao_, 0);
-  glVertexArrayAttribFormat(edgeVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(edgeVao_, 0, 0);
   glCreateVertexArrays(1, &emptyVao_);
-  glCreateVertexArrays(1, &patchVao_);
-  glCreateBuffers(1, &patchVbo_);
-  glVertexArrayVertexBuffer(patchVao_, 0, patchVbo_, 0, sizeof(BezierVertex));
-  for (GLuint attribute = 0; attribute < 10; ++attribute) {
-    const GLuint offset = attribute == 0   ? offsetof(BezierVertex, position)
-                          : attribute == 1 ? offsetof(BezierVertex, beta)
-                                           : GLuint(offsetof(BezierVertex, control) + (attribute - 2) * sizeof(glm::vec4));
-    glEnableVertexArrayAttrib(patchVao_, attribute);
-    glVertexArrayAttribFormat(patchVao_, attribute, attribute < 2 ? 3 : 4, GL_FLOAT, GL_FALSE, offset);
-    glVertexArrayAttribBinding(patchVao_, attribute, 0);
-  }
   glCreateQueries(GL_TIME_ELAPSED, 2, timerQueries_.data());
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, patchVao_, overlayVao_};
-  glDeleteVertexArrays(5, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, patchVbo_, polygonCorners_, polygonOffsets_, overlayVbo_};
-  glDeleteBuffers(6, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_};
+  glDeleteVertexArrays(4, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_};
+  glDeleteBuffers(5, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -142,8 +134,7 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings) {
                    ? cloughTocherVertices(buildCloughTocherPatches(surface, gradients, settings.cloughTocher))
                    : powellSabinVertices(buildPowellSabinPatches(surface, gradients));
   }
-  glNamedBufferData(patchVbo_, vertices.size() * sizeof(BezierVertex), vertices.data(), GL_STATIC_DRAW);
-  patchVertices_ = static_cast<GLsizei>(vertices.size());
+  bezierPass_.upload(std::move(vertices), settings.method == ShadingMethod::CloughTocher ? 3 : 2);
   patchesFor_ = wanted;
 }
 
@@ -194,11 +185,11 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else {
     uploadPatches(settings);
-    bezierProgram_.set("clipFromWorld", clipFromWorld);
-    bezierProgram_.set("degree", settings.method == ShadingMethod::CloughTocher ? 3 : 2);
-    bezierProgram_.use();
-    glBindVertexArray(patchVao_);
-    glDrawArrays(GL_TRIANGLES, 0, patchVertices_);
+    BezierEvaluation evaluation;
+    evaluation.tessellation = settings.tessellation;
+    evaluation.tolerance = settings.tessellationTolerance;
+    evaluation.exposureScale = std::exp2(settings.exposure);
+    bezierPass_.draw(clipFromWorld, evaluation);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 

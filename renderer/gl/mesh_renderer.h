@@ -6,6 +6,7 @@
 // core context (EglContext, or the viewer's window).
 #include "core/camera.h"
 #include "core/image.h"
+#include "gl/bezier_pass.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
 #include "interp/interpolant.h"
@@ -37,6 +38,10 @@ struct RenderSettings {
   ShadingMethod method = ShadingMethod::Gouraud;
   bool perspectiveCorrect = true;  // Gouraud: false interpolates linearly in screen space
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
+  // Quadratic and C1 methods: 0 exact per pixel, 1..64 tessellated at that level,
+  // kAdaptiveTessellation at the level that keeps the display error under the tolerance.
+  int tessellation = 0;
+  double tessellationTolerance = 0.5 / 255.0;
   double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
@@ -62,6 +67,8 @@ class MeshRenderer {
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
   double gpuFrameMs() const { return gpuFrameMs_; }
   size_t triangleCount() const { return triangleVertices_ / 3; }
+  // The Bezier pieces of the last quadratic or C1 frame: patches, draws, levels, triangles.
+  const TessellationStatistics& tessellationStatistics() const { return bezierPass_.statistics(); }
   size_t tVertexCount() const { return size_t(tVertexMarkers_); }
 
  private:
@@ -69,7 +76,6 @@ class MeshRenderer {
   ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
-  ShaderProgram bezierProgram_{{"bezier.vert", "bezier.frag"}};
   ShaderProgram polygonProgram_{{"polygon.vert", "polygon.frag"}};
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GLuint overlayVao_ = 0, overlayVbo_ = 0;
@@ -81,9 +87,8 @@ class MeshRenderer {
   // the method or the Clough-Tocher variant changes).
   void uploadPatches(const RenderSettings& settings);
   RadiosityMesh mesh_;
-  GLuint patchVao_ = 0, patchVbo_ = 0;
-  GLsizei patchVertices_ = 0;
-  int patchesFor_ = -1;  // the method and variant the patch buffer holds, -1 none
+  BezierPass bezierPass_;
+  int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};
   int frame_ = 0;

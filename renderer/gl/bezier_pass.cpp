@@ -1,0 +1,118 @@
+#include "gl/bezier_pass.h"
+
+#include "interp/tessellation_level.h"
+
+#include <cstddef>
+
+namespace radview::gl {
+
+namespace {
+
+// ../shared/PLATFORM.md saw llvmpipe lose geometry past ~125k triangles per draw; with these
+// patches (8 vec4 of patch data each) it corrupts already at ~91k (level 32 and 64 on
+// assets/discontinuities.gltf) and not at 75k. 50k keeps a margin.
+constexpr size_t kMaxTrianglesPerDraw = 50'000;
+
+// The net of the piece starting at `vertex`, unpacked as the shaders read it.
+std::array<Rgb, 10> netOf(const BezierVertex& vertex) {
+  std::array<Rgb, 10> net{};
+  for (int i = 0; i < 10; ++i)
+    for (int c = 0; c < 3; ++c) net[i][c] = vertex.control[(3 * i + c) / 4][(3 * i + c) % 4];
+  return net;
+}
+
+// Triangles equal-spacing tessellation makes of a triangle at inner level L, bounded above
+// (outer levels at most L add at most 3 L more).
+size_t trianglesAt(int L) { return size_t(L) * L + 3 * size_t(L); }
+
+}  // namespace
+
+BezierPass::BezierPass() {
+  glCreateVertexArrays(1, &vao_);
+  glCreateBuffers(1, &vbo_);
+  glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(BezierVertex));
+  for (GLuint attribute = 0; attribute < 10; ++attribute) {
+    const GLuint offset = attribute == 0   ? offsetof(BezierVertex, position)
+                          : attribute == 1 ? offsetof(BezierVertex, beta)
+                                           : GLuint(offsetof(BezierVertex, control) + (attribute - 2) * sizeof(glm::vec4));
+    glEnableVertexArrayAttrib(vao_, attribute);
+    glVertexArrayAttribFormat(vao_, attribute, attribute < 2 ? 3 : 4, GL_FLOAT, GL_FALSE, offset);
+    glVertexArrayAttribBinding(vao_, attribute, 0);
+  }
+  glCreateQueries(GL_PRIMITIVES_GENERATED, 2, primitiveQueries_.data());
+}
+
+BezierPass::~BezierPass() {
+  glDeleteVertexArrays(1, &vao_);
+  glDeleteBuffers(1, &vbo_);
+  glDeleteQueries(2, primitiveQueries_.data());
+}
+
+void BezierPass::upload(std::vector<BezierVertex> vertices, int degree) {
+  glNamedBufferData(vbo_, vertices.size() * sizeof(BezierVertex), vertices.data(), GL_STATIC_DRAW);
+  vertices_ = std::move(vertices);
+  degree_ = degree;
+}
+
+void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation) {
+  const size_t patches = vertices_.size() / 3;
+  statistics_.patches = patches;
+  glBindVertexArray(vao_);
+  if (evaluation.tessellation == 0) {
+    perPixel_.set("clipFromWorld", clipFromWorld);
+    perPixel_.set("degree", degree_);
+    perPixel_.use();
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size()));
+    statistics_.draws = 1;
+    statistics_.averageLevel = 1.0;
+    statistics_.trianglesGenerated = patches;
+    return;
+  }
+
+  // Each patch's inner level, as the control shader will choose it, to plan the batches.
+  std::vector<int> levels(patches, evaluation.tessellation);
+  if (evaluation.tessellation == kAdaptiveTessellation)
+    for (size_t p = 0; p < patches; ++p) {
+      const std::array<Rgb, 10> net = netOf(vertices_[3 * p]);
+      levels[p] = adaptiveTessellationLevels(degree_, net.data(), evaluation.exposureScale, evaluation.tolerance).inner;
+    }
+
+  if (frame_ >= 2) {
+    GLuint64 generated = 0;
+    GLint ready = 0;
+    glGetQueryObjectiv(primitiveQueries_[frame_ % 2], GL_QUERY_RESULT_AVAILABLE, &ready);
+    if (ready) {
+      glGetQueryObjectui64v(primitiveQueries_[frame_ % 2], GL_QUERY_RESULT, &generated);
+      statistics_.trianglesGenerated = size_t(generated);
+    }
+  }
+  tessellated_.set("clipFromWorld", clipFromWorld);
+  tessellated_.set("degree", degree_);
+  tessellated_.set("fixedLevel", evaluation.tessellation == kAdaptiveTessellation ? 0 : evaluation.tessellation);
+  tessellated_.set("exposureScale", float(evaluation.exposureScale));
+  tessellated_.set("tolerance", float(evaluation.tolerance));
+  tessellated_.use();
+  glPatchParameteri(GL_PATCH_VERTICES, 3);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, primitiveQueries_[frame_ % 2]);
+  size_t first = 0, draws = 0;
+  double levelSum = 0.0;
+  while (first < patches) {
+    size_t count = 0, triangles = 0;
+    // The CPU's level may differ from the shader's by one where float and double round a
+    // bound differently: plan with one more.
+    while (first + count < patches && (count == 0 || triangles + trianglesAt(levels[first + count] + 1) <= kMaxTrianglesPerDraw)) {
+      triangles += trianglesAt(levels[first + count] + 1);
+      levelSum += levels[first + count];
+      ++count;
+    }
+    glDrawArrays(GL_PATCHES, GLint(3 * first), GLsizei(3 * count));
+    first += count;
+    ++draws;
+  }
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  ++frame_;
+  statistics_.draws = draws;
+  statistics_.averageLevel = patches ? levelSum / double(patches) : 0.0;
+}
+
+}  // namespace radview::gl

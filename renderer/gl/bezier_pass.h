@@ -1,0 +1,59 @@
+#pragma once
+// Draws the Bezier pieces of the quadratic and C1 interpolants (patch_vertices.h), either
+// evaluated exactly per pixel, or tessellated on the GPU at a fixed or adaptive level and
+// interpolated linearly between generated vertices (C&W §9.2).
+#include "gl/patch_vertices.h"
+#include "gl/shader_program.h"
+
+#include <epoxy/gl.h>
+
+#include <array>
+#include <vector>
+
+namespace radview::gl {
+
+// How a Bezier piece reaches the pixels.
+struct BezierEvaluation {
+  // 0: exact per pixel (no tessellation); 1..64: tessellated at that level; -1: tessellated
+  // at the adaptive level that keeps the display error under `tolerance`.
+  int tessellation = 0;
+  double tolerance = 0.5 / 255.0;  // display units (an 8-bit step is 1/255)
+  double exposureScale = 1.0;      // 2^exposure, which the display error depends on
+};
+
+inline constexpr int kAdaptiveTessellation = -1;
+
+// What the last draw generated.
+struct TessellationStatistics {
+  size_t patches = 0;
+  size_t draws = 0;             // one per batch (see BezierPass::draw)
+  double averageLevel = 0.0;    // inner level; 1 for per pixel
+  size_t trianglesGenerated = 0;  // GL_PRIMITIVES_GENERATED of the last draw whose query is ready
+};
+
+class BezierPass {
+ public:
+  BezierPass();
+  ~BezierPass();
+  BezierPass(const BezierPass&) = delete;
+  BezierPass& operator=(const BezierPass&) = delete;
+
+  void upload(std::vector<BezierVertex> vertices, int degree);
+  // Into the bound framebuffer, depth-tested. Tessellated draws are split so that none
+  // generates more than 50k triangles: past ~91k per draw llvmpipe corrupts these patches
+  // (bezier_pass.cpp); the adaptive levels are computed on the CPU too for that.
+  void draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation);
+  const TessellationStatistics& statistics() const { return statistics_; }
+
+ private:
+  ShaderProgram perPixel_{{"bezier.vert", "bezier.frag"}};
+  ShaderProgram tessellated_{{"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}};
+  GLuint vao_ = 0, vbo_ = 0;
+  std::vector<BezierVertex> vertices_;  // kept for the CPU's batch planning
+  int degree_ = 3;
+  std::array<GLuint, 2> primitiveQueries_{};
+  int frame_ = 0;
+  TessellationStatistics statistics_;
+};
+
+}  // namespace radview::gl
