@@ -45,6 +45,7 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   settings.elementEdges = display.edges;
   settings.discontinuityEdges = display.discontinuities;
   settings.tVertices = display.tVertices;
+  settings.repairTVertices = display.repairTVertices;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
   settings.tessellation = parseTessellation(display.tessellation);
   settings.tessellationTolerance = display.tolerance / 255.0;

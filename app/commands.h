@@ -13,6 +13,7 @@ struct DisplayOptions {
   bool edges = false;
   bool discontinuities = false;  // overlay discontinuity edges, coloured by order
   bool tVertices = false;        // overlay T-vertex markers
+  bool repairTVertices = false;  // triangulate elements through their T-vertices before drawing
   std::string variant = "affine";  // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps

@@ -37,6 +37,8 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
   command.add_flag("--t-vertices", d.tVertices, "Overlay T-vertices as magenta markers");
+  command.add_flag("--repair-t-vertices", d.repairTVertices,
+                   "Triangulate every element that has a T-vertex through it before drawing (Baum et al.)");
   command.add_option("--tessellation", d.tessellation,
                      "quadratic, c1-quadratic, clough-tocher: exact (evaluated per pixel), adaptive (GPU-"
                      "tessellated until the display error is under --tolerance), or a fixed level 1..64")

@@ -48,6 +48,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
     case GLFW_KEY_D: s.settings.discontinuityEdges = !s.settings.discontinuityEdges; break;
     case GLFW_KEY_T: s.settings.tVertices = !s.settings.tVertices; break;
+    case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
     case GLFW_KEY_F: resetCamera(s); break;
     case GLFW_KEY_S: s.screenshotRequested = true; break;
@@ -172,6 +173,7 @@ int runViewer(const ViewerOptions& options) {
   state.settings.elementEdges = options.display.edges;
   state.settings.discontinuityEdges = options.display.discontinuities;
   state.settings.tVertices = options.display.tVertices;
+  state.settings.repairTVertices = options.display.repairTVertices;
   state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
   state.settings.tessellation = parseTessellation(options.display.tessellation);
   state.settings.tessellationTolerance = options.display.tolerance / 255.0;

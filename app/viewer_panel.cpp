@@ -25,6 +25,7 @@ const char* shortcutHelp() {
   return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
          "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
+         "B repair T-vertices (triangulate through them),\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -115,6 +116,8 @@ void drawPanel(ViewerState& state) {
   ImGui::TextColored(ImVec4(kDiscontinuityC0Color.r, kDiscontinuityC0Color.g, kDiscontinuityC0Color.b, 1), "C0");
   const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
+  ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
 
   section("View");
   if (ImGui::Button("Rotate 45 deg [R]")) rotateView45(state);

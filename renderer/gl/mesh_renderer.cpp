@@ -4,6 +4,7 @@
 #include "core/strings.h"
 #include "gl/patch_vertices.h"
 #include "interp/c1_patches.h"
+#include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
 
 #include <algorithm>
@@ -91,6 +92,13 @@ MeshRenderer::~MeshRenderer() {
 }
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
+  original_ = mesh;
+  uploadMesh(false);
+}
+
+void MeshRenderer::uploadMesh(bool repairTVertices) {
+  const RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(original_) : original_;
+  repairedDrawn_ = repairTVertices;
   const DisplayMesh display = buildDisplayMesh(mesh);
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
@@ -142,6 +150,7 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   // Errors left on this context by other code (the UI) are not this pass's to report.
   while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
+  if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
   const bool timing = frame_ >= 2;
   if (timing) {
     GLuint64 ns = 0;

@@ -46,6 +46,7 @@ struct RenderSettings {
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
   bool tVertices = false;           // markers
+  bool repairTVertices = false;     // draw elements with T-vertices as triangles through them (Baum et al.)
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -86,7 +87,10 @@ class MeshRenderer {
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
   // the method or the Clough-Tocher variant changes).
   void uploadPatches(const RenderSettings& settings);
-  RadiosityMesh mesh_;
+  void uploadMesh(bool repairTVertices);
+  RadiosityMesh original_;      // as set
+  RadiosityMesh mesh_;          // as drawn: the original, or with its T-vertices repaired
+  bool repairedDrawn_ = false;
   BezierPass bezierPass_;
   int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
   // Timer queries, two in flight so reading a result never stalls the frame.

@@ -96,3 +96,35 @@ TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
 
 }  // namespace
 }  // namespace radview::gl
+
+namespace radview::gl {
+namespace {
+
+// Across the seam of assets/t_vertices.gltf at the T-vertex (0.5, 0.25): the coarse side
+// interpolates its edge from (0.5, 0) and (0.5, 0.5), 0.558, where the fine side has the
+// node's 0.683; repaired, both sides pass through the node.
+float seamJump(bool repair) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/t_vertices.gltf").mesh);
+  Camera camera;  // looking straight at the unit square, which fills 200 x 200 pixels
+  camera.eye = {0.5, 0.5, 1.0};
+  camera.target = {0.5, 0.5, 0.0};
+  camera.yfov = 2.0 * std::atan(0.5);
+  camera.zNear = 0.1;
+  camera.zFar = 10;
+  RenderSettings settings;
+  settings.repairTVertices = repair;
+  renderer.render(camera, settings, 200, 200);
+  const LinearImage image = renderer.readLinear();
+  const int row = 200 - 50;  // y = 0.25, image rows from the top
+  return std::abs(image.rgba[(row * 200 + 98) * 4] - image.rgba[(row * 200 + 101) * 4]);
+}
+
+TEST(TVertexRepairOnTheGpu, GouraudJumpsAtATVertexUnlessRepaired) {
+  EXPECT_GT(seamJump(false), 0.1f);
+  EXPECT_LT(seamJump(true), 0.02f);
+}
+
+}  // namespace
+}  // namespace radview::gl
