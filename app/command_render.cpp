@@ -43,6 +43,7 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   settings.perspectiveCorrect = !display.screenSpace;
   settings.exposure = display.exposure;
   settings.elementEdges = display.edges;
+  settings.view = gl::displayViewFromName(display.view);
   settings.discontinuityEdges = display.discontinuities;
   settings.tVertices = display.tVertices;
   settings.repairTVertices = display.repairTVertices;

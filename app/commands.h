@@ -11,6 +11,7 @@ struct DisplayOptions {
   double exposure = 0.0;     // stops
   std::string camera;        // preset or eye/target/up; empty: the file's camera, else front
   bool edges = false;
+  std::string view = "normal";  // normal, value, gradient, isolines
   bool discontinuities = false;  // overlay discontinuity edges, coloured by order
   bool tVertices = false;        // overlay T-vertex markers
   bool repairTVertices = false;  // triangulate elements through their T-vertices before drawing

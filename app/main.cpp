@@ -34,6 +34,11 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
                      "A preset (" + joined(cameraPresetNames()) + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
                      "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
+  command.add_option("--view", d.view,
+                     "normal; or false colour: value (with a colour bar), gradient (its magnitude per pixel: "
+                     "Mach bands are jumps in it), isolines")
+      ->check(CLI::IsMember(gl::displayViewNames()))
+      ->capture_default_str();
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
   command.add_flag("--t-vertices", d.tVertices, "Overlay T-vertices as magenta markers");

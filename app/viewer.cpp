@@ -48,6 +48,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
     case GLFW_KEY_D: s.settings.discontinuityEdges = !s.settings.discontinuityEdges; break;
     case GLFW_KEY_T: s.settings.tVertices = !s.settings.tVertices; break;
+    case GLFW_KEY_C: s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4); break;
     case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
     case GLFW_KEY_F: resetCamera(s); break;
@@ -171,6 +172,7 @@ int runViewer(const ViewerOptions& options) {
   state.settings.perspectiveCorrect = !options.display.screenSpace;
   state.settings.exposure = options.display.exposure;
   state.settings.elementEdges = options.display.edges;
+  state.settings.view = gl::displayViewFromName(options.display.view);
   state.settings.discontinuityEdges = options.display.discontinuities;
   state.settings.tVertices = options.display.tVertices;
   state.settings.repairTVertices = options.display.repairTVertices;

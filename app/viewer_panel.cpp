@@ -25,7 +25,7 @@ const char* shortcutHelp() {
   return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
          "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
-         "B repair T-vertices (triangulate through them),\n"
+         "B repair T-vertices (triangulate through them), C false-colour view,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -108,6 +108,21 @@ void drawPanel(ViewerState& state) {
   ImGui::PushItemWidth(200);
   if (ImGui::SliderFloat("Exposure, stops", &exposure, -10.0f, 10.0f, "%.1f")) state.settings.exposure = exposure;
   ImGui::PopItemWidth();
+  int view = static_cast<int>(state.settings.view);
+  ImGui::PushItemWidth(200);
+  ImGui::Combo("View [C]", &view, "Normal\0Value, false colour\0Gradient magnitude\0Isolines\0");
+  state.settings.view = static_cast<gl::DisplayView>(view);
+  if (state.settings.view == gl::DisplayView::GradientMagnitude) {
+    float scale = float(state.settings.gradientScale);
+    if (ImGui::SliderFloat("Scale top, per pixel", &scale, 0.001f, 0.2f, "%.3f", ImGuiSliderFlags_Logarithmic))
+      state.settings.gradientScale = scale;
+  }
+  if (state.settings.view == gl::DisplayView::Isolines) ImGui::SliderInt("Levels", &state.settings.isolineCount, 2, 64);
+  ImGui::PopItemWidth();
+  if (state.settings.view == gl::DisplayView::Value)
+    ImGui::TextDisabled("colour bar (right edge): displayed luminance 0 .. 1");
+  if (state.settings.view == gl::DisplayView::GradientMagnitude)
+    ImGui::TextDisabled("Mach bands are jumps here; compare Gouraud with C1");
   ImGui::Checkbox("Element edges [E]", &state.settings.elementEdges);
   ImGui::Checkbox("Discontinuity edges [D]", &state.settings.discontinuityEdges);
   ImGui::SameLine();

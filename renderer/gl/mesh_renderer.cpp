@@ -26,6 +26,18 @@ ShadingMethod shadingMethodFromName(const std::string& name) {
   throw Error("unknown shading method '" + name + "' (expected one of " + joined(names) + ")");
 }
 
+const std::vector<std::string>& displayViewNames() {
+  static const std::vector<std::string> names = {"normal", "value", "gradient", "isolines"};
+  return names;
+}
+
+DisplayView displayViewFromName(const std::string& name) {
+  const auto& names = displayViewNames();
+  for (size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<DisplayView>(i);
+  throw Error("unknown display view '" + name + "' (expected one of " + joined(names) + ")");
+}
+
 namespace {
 
 // RGBA pixels of a framebuffer's colour buffer, top row first (OpenGL reads bottom-up).
@@ -208,6 +220,9 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   toneMapProgram_.set("exposureScale", static_cast<float>(std::exp2(settings.exposure)));
   toneMapProgram_.set("background", settings.background);
   toneMapProgram_.set("linearRadiosity", 0);
+  toneMapProgram_.set("view", static_cast<int>(settings.view));
+  toneMapProgram_.set("gradientScale", float(settings.gradientScale));
+  toneMapProgram_.set("isolineCount", settings.isolineCount);
   toneMapProgram_.use();
   glBindTextureUnit(0, targets_.linearTexture());
   glBindVertexArray(emptyVao_);

@@ -34,6 +34,16 @@ enum class ShadingMethod : int {
 const std::vector<std::string>& shadingMethodNames();
 ShadingMethod shadingMethodFromName(const std::string& name);  // throws Error
 
+// What the display shows of the linear radiosity.
+enum class DisplayView : int {
+  Normal,             // exposure and sRGB
+  Value,              // the displayed luminance on a colour scale, with a colour bar
+  GradientMagnitude,  // of the displayed luminance per pixel: Mach bands are jumps in it
+  Isolines,           // the normal display with lines between luminance levels
+};
+const std::vector<std::string>& displayViewNames();  // "normal", "value", "gradient", "isolines"
+DisplayView displayViewFromName(const std::string& name);  // throws Error
+
 struct RenderSettings {
   ShadingMethod method = ShadingMethod::Gouraud;
   bool perspectiveCorrect = true;  // Gouraud: false interpolates linearly in screen space
@@ -43,6 +53,9 @@ struct RenderSettings {
   int tessellation = 0;
   double tessellationTolerance = 0.5 / 255.0;
   double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
+  DisplayView view = DisplayView::Normal;
+  double gradientScale = 0.02;  // gradient view: display units per pixel at the top of the scale
+  int isolineCount = 16;        // isolines view: levels across the display range
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
   bool tVertices = false;           // markers

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 namespace radview::gl {
 namespace {
 
@@ -124,6 +126,57 @@ float seamJump(bool repair) {
 TEST(TVertexRepairOnTheGpu, GouraudJumpsAtATVertexUnlessRepaired) {
   EXPECT_GT(seamJump(false), 0.1f);
   EXPECT_LT(seamJump(true), 0.02f);
+}
+
+}  // namespace
+}  // namespace radview::gl
+
+namespace radview::gl {
+namespace {
+
+// The gradient view across the fig. 9.8 quad's diagonal 0-2, two pixels apart: Gouraud's two
+// triangles have gradients of magnitude 1.0 and 0.72 (a jump, what the eye sees as a Mach
+// band), bilinear's gradient is continuous there.
+int gradientViewJump(ShadingMethod method) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/fig9_8_quad.gltf").mesh);
+  RenderSettings settings;
+  settings.method = method;
+  settings.view = DisplayView::GradientMagnitude;
+  settings.gradientScale = 0.05;
+  renderer.render(faceOn(0), settings, 101, 101);
+  const Image image = renderer.readDisplay();
+  auto at = [&](int x, int y) { return &image.rgba[(size_t(y) * 101 + x) * 4]; };
+  // The diagonal runs from the bottom-left to the top-right corner, y = 100 - x in rows from
+  // the top; (52, 52) and (48, 48) are 2.8 pixels either side of it, beyond the reach of the
+  // central differences.
+  const uint8_t* a = at(52, 52);
+  const uint8_t* b = at(48, 48);
+  int jump = 0;
+  for (int c = 0; c < 3; ++c) jump = std::max(jump, std::abs(int(a[c]) - int(b[c])));
+  return jump;
+}
+
+TEST(DisplayViews, GradientViewShowsGouraudsJumpAndNotBilinears) {
+  const int gouraud = gradientViewJump(ShadingMethod::Gouraud), bilinear = gradientViewJump(ShadingMethod::Bilinear);
+  std::cout << "gradient view across the diagonal: Gouraud " << gouraud << ", bilinear " << bilinear << " steps\n";
+  EXPECT_GT(gouraud, 2 * bilinear);  // measured 39 against 14
+}
+
+TEST(DisplayViews, ValueViewDrawsItsColourBar) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/fig9_8_quad.gltf").mesh);
+  RenderSettings settings;
+  settings.view = DisplayView::Value;
+  renderer.render(faceOn(0), settings, 64, 64);
+  const Image image = renderer.readDisplay();
+  const uint8_t* top = &image.rgba[(0 * 64 + 62) * 4];
+  const uint8_t* bottom = &image.rgba[(63 * 64 + 62) * 4];
+  EXPECT_GT(top[0] + top[1] + top[2], 3 * 230);   // white at 1
+  EXPECT_LT(bottom[0] + bottom[1], 2 * 40);        // dark blue at 0
+  EXPECT_GT(bottom[2], bottom[0]);
 }
 
 }  // namespace
