@@ -47,6 +47,8 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   settings.discontinuityEdges = display.discontinuities;
   settings.tVertices = display.tVertices;
   settings.repairTVertices = display.repairTVertices;
+  settings.splitLines = display.splitLines;
+  settings.tessellationTriangles = display.tessellationTriangles;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
   settings.tessellation = parseTessellation(display.tessellation);
   settings.tessellationTolerance = display.tolerance / 255.0;

@@ -15,6 +15,8 @@ struct DisplayOptions {
   bool discontinuities = false;  // overlay discontinuity edges, coloured by order
   bool tVertices = false;        // overlay T-vertex markers
   bool repairTVertices = false;  // triangulate elements through their T-vertices before drawing
+  bool splitLines = false;       // overlay the Bezier pieces' boundaries
+  bool tessellationTriangles = false;  // overlay the generated triangles
   std::string variant = "affine";  // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps

@@ -42,6 +42,10 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
   command.add_flag("--t-vertices", d.tVertices, "Overlay T-vertices as magenta markers");
+  command.add_flag("--split-lines", d.splitLines,
+                   "c1-quadratic, clough-tocher: overlay the lines that cut elements into Bezier pieces");
+  command.add_flag("--tessellation-triangles", d.tessellationTriangles,
+                   "Tessellated methods: overlay the triangles the GPU generates");
   command.add_flag("--repair-t-vertices", d.repairTVertices,
                    "Triangulate every element that has a T-vertex through it before drawing (Baum et al.)");
   command.add_option("--tessellation", d.tessellation,

@@ -49,6 +49,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_D: s.settings.discontinuityEdges = !s.settings.discontinuityEdges; break;
     case GLFW_KEY_T: s.settings.tVertices = !s.settings.tVertices; break;
     case GLFW_KEY_C: s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4); break;
+    case GLFW_KEY_L: s.settings.splitLines = !s.settings.splitLines; break;
+    case GLFW_KEY_W: s.settings.tessellationTriangles = !s.settings.tessellationTriangles; break;
     case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
     case GLFW_KEY_F: resetCamera(s); break;
@@ -176,6 +178,8 @@ int runViewer(const ViewerOptions& options) {
   state.settings.discontinuityEdges = options.display.discontinuities;
   state.settings.tVertices = options.display.tVertices;
   state.settings.repairTVertices = options.display.repairTVertices;
+  state.settings.splitLines = options.display.splitLines;
+  state.settings.tessellationTriangles = options.display.tessellationTriangles;
   state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
   state.settings.tessellation = parseTessellation(options.display.tessellation);
   state.settings.tessellationTolerance = options.display.tolerance / 255.0;

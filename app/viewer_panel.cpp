@@ -25,7 +25,8 @@ const char* shortcutHelp() {
   return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
          "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
-         "B repair T-vertices (triangulate through them), C false-colour view,\n"
+         "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
+         "W tessellation triangles,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -132,6 +133,10 @@ void drawPanel(ViewerState& state) {
   const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
+  if (state.settings.method >= gl::ShadingMethod::C1Quadratic)
+    ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
+  if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)
+    ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
 
   section("View");

@@ -69,14 +69,6 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
     return;
   }
 
-  // Each patch's inner level, as the control shader will choose it, to plan the batches.
-  std::vector<int> levels(patches, evaluation.tessellation);
-  if (evaluation.tessellation == kAdaptiveTessellation)
-    for (size_t p = 0; p < patches; ++p) {
-      const std::array<Rgb, 10> net = netOf(vertices_[3 * p]);
-      levels[p] = adaptiveTessellationLevels(degree_, net.data(), evaluation.exposureScale, evaluation.tolerance).inner;
-    }
-
   if (frame_ >= 2) {
     GLuint64 generated = 0;
     GLint ready = 0;
@@ -87,20 +79,52 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
     }
   }
   tessellated_.set("clipFromWorld", clipFromWorld);
+  tessellated_.set("wireframe", 0);
+  glBeginQuery(GL_PRIMITIVES_GENERATED, primitiveQueries_[frame_ % 2]);
+  size_t draws = 0;
+  const double levelSum = drawTessellated(evaluation, draws);
+  glEndQuery(GL_PRIMITIVES_GENERATED);
+  ++frame_;
+  statistics_.draws = draws;
+  statistics_.averageLevel = patches ? levelSum / double(patches) : 0.0;
+}
+
+void BezierPass::drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation,
+                               const glm::vec4& color) {
+  if (evaluation.tessellation == 0 || vertices_.empty()) return;
+  glBindVertexArray(vao_);
+  tessellated_.set("clipFromWorld", clipFromWorld);
+  tessellated_.set("wireframe", 1);
+  tessellated_.set("wireColor", color);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  size_t draws = 0;
+  drawTessellated(evaluation, draws);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+}
+
+double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& draws) {
+  const size_t patches = vertices_.size() / 3;
+  // Each patch's inner level, as the control shader will choose it, to plan the batches.
+  std::vector<int> levels(patches, evaluation.tessellation);
+  if (evaluation.tessellation == kAdaptiveTessellation)
+    for (size_t p = 0; p < patches; ++p) {
+      const std::array<Rgb, 10> net = netOf(vertices_[3 * p]);
+      levels[p] = adaptiveTessellationLevels(degree_, net.data(), evaluation.exposureScale, evaluation.tolerance).inner;
+    }
   tessellated_.set("degree", degree_);
   tessellated_.set("fixedLevel", evaluation.tessellation == kAdaptiveTessellation ? 0 : evaluation.tessellation);
   tessellated_.set("exposureScale", float(evaluation.exposureScale));
   tessellated_.set("tolerance", float(evaluation.tolerance));
   tessellated_.use();
   glPatchParameteri(GL_PATCH_VERTICES, 3);
-  glBeginQuery(GL_PRIMITIVES_GENERATED, primitiveQueries_[frame_ % 2]);
-  size_t first = 0, draws = 0;
+  size_t first = 0;
   double levelSum = 0.0;
   while (first < patches) {
     size_t count = 0, triangles = 0;
     // The CPU's level may differ from the shader's by one where float and double round a
     // bound differently: plan with one more.
-    while (first + count < patches && (count == 0 || triangles + trianglesAt(levels[first + count] + 1) <= kMaxTrianglesPerDraw)) {
+    while (first + count < patches &&
+           (count == 0 || triangles + trianglesAt(levels[first + count] + 1) <= kMaxTrianglesPerDraw)) {
       triangles += trianglesAt(levels[first + count] + 1);
       levelSum += levels[first + count];
       ++count;
@@ -109,10 +133,7 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
     first += count;
     ++draws;
   }
-  glEndQuery(GL_PRIMITIVES_GENERATED);
-  ++frame_;
-  statistics_.draws = draws;
-  statistics_.averageLevel = patches ? levelSum / double(patches) : 0.0;
+  return levelSum;
 }
 
 }  // namespace radview::gl

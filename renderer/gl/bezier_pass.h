@@ -43,10 +43,15 @@ class BezierPass {
   // generates more than 50k triangles: past ~91k per draw llvmpipe corrupts these patches
   // (bezier_pass.cpp); the adaptive levels are computed on the CPU too for that.
   void draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation);
+  // The generated triangles as lines of `color` (the tessellation overlay), same levels as
+  // draw(); nothing when evaluating per pixel.
+  void drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation, const glm::vec4& color);
   const TessellationStatistics& statistics() const { return statistics_; }
 
  private:
   ShaderProgram perPixel_{{"bezier.vert", "bezier.frag"}};
+  // Issues the tessellated draws in batches; returns the inner-level sum of the patches.
+  double drawTessellated(const BezierEvaluation& evaluation, size_t& draws);
   ShaderProgram tessellated_{{"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}};
   GLuint vao_ = 0, vbo_ = 0;
   std::vector<BezierVertex> vertices_;  // kept for the CPU's batch planning

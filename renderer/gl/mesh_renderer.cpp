@@ -89,6 +89,13 @@ MeshRenderer::MeshRenderer() {
   glVertexArrayAttribFormat(overlayVao_, 1, 4, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, color));
   glVertexArrayAttribBinding(overlayVao_, 1, 0);
 
+  glCreateVertexArrays(1, &splitVao_);
+  glCreateBuffers(1, &splitVbo_);
+  glVertexArrayVertexBuffer(splitVao_, 0, splitVbo_, 0, sizeof(glm::vec3));
+  glEnableVertexArrayAttrib(splitVao_, 0);
+  glVertexArrayAttribFormat(splitVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(splitVao_, 0, 0);
+
   glCreateBuffers(1, &polygonCorners_);
   glCreateBuffers(1, &polygonOffsets_);
   glCreateVertexArrays(1, &emptyVao_);
@@ -96,10 +103,10 @@ MeshRenderer::MeshRenderer() {
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_};
-  glDeleteVertexArrays(4, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_};
-  glDeleteBuffers(5, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_};
+  glDeleteVertexArrays(5, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_, splitVbo_};
+  glDeleteBuffers(6, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -145,15 +152,24 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings) {
   const int wanted = int(settings.method) * 2 + int(settings.cloughTocher);
   if (wanted == patchesFor_) return;
   std::vector<BezierVertex> vertices;
+  std::vector<glm::vec3> split;
   if (settings.method == ShadingMethod::Quadratic) {
     vertices = quadraticLagrangeVertices(mesh_);
   } else {
     const SurfaceTriangulation surface(mesh_);
     const CornerGradients gradients = vertexGradients(surface, true);
-    vertices = settings.method == ShadingMethod::CloughTocher
-                   ? cloughTocherVertices(buildCloughTocherPatches(surface, gradients, settings.cloughTocher))
-                   : powellSabinVertices(buildPowellSabinPatches(surface, gradients));
+    if (settings.method == ShadingMethod::CloughTocher) {
+      const auto patches = buildCloughTocherPatches(surface, gradients, settings.cloughTocher);
+      vertices = cloughTocherVertices(patches);
+      split = cloughTocherSplitLines(patches);
+    } else {
+      const auto patches = buildPowellSabinPatches(surface, gradients);
+      vertices = powellSabinVertices(patches);
+      split = powellSabinSplitLines(patches);
+    }
   }
+  glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
+  splitVertices_ = static_cast<GLsizei>(split.size());
   bezierPass_.upload(std::move(vertices), settings.method == ShadingMethod::CloughTocher ? 3 : 2);
   patchesFor_ = wanted;
 }
@@ -238,6 +254,27 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     linesProgram_.use();
     glBindVertexArray(edgeVao_);
     glDrawArrays(GL_LINES, 0, edgeVertices_);
+    glDepthMask(GL_TRUE);
+  }
+  const bool bezierMethod = settings.method >= ShadingMethod::Quadratic;
+  if (bezierMethod && (settings.tessellationTriangles || settings.splitLines)) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    if (settings.tessellationTriangles) {
+      BezierEvaluation evaluation;
+      evaluation.tessellation = settings.tessellation;
+      evaluation.tolerance = settings.tessellationTolerance;
+      evaluation.exposureScale = std::exp2(settings.exposure);
+      bezierPass_.drawTriangles(clipFromWorld, evaluation, kTessellationColor);
+    }
+    if (settings.splitLines && splitVertices_ > 0) {
+      linesProgram_.set("clipFromWorld", clipFromWorld);
+      linesProgram_.set("color", kSplitLineColor);
+      linesProgram_.use();
+      glBindVertexArray(splitVao_);
+      glDrawArrays(GL_LINES, 0, splitVertices_);
+    }
     glDepthMask(GL_TRUE);
   }
   if ((settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0)) {

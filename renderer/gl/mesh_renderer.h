@@ -59,7 +59,9 @@ struct RenderSettings {
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
   bool tVertices = false;           // markers
-  bool repairTVertices = false;     // draw elements with T-vertices as triangles through them (Baum et al.)
+  bool repairTVertices = false;
+  bool splitLines = false;              // C1 methods: the lines that cut elements into Bezier pieces
+  bool tessellationTriangles = false;   // tessellated methods: the generated triangles     // draw elements with T-vertices as triangles through them (Baum et al.)
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -105,6 +107,8 @@ class MeshRenderer {
   RadiosityMesh mesh_;          // as drawn: the original, or with its T-vertices repaired
   bool repairedDrawn_ = false;
   BezierPass bezierPass_;
+  GLuint splitVao_ = 0, splitVbo_ = 0;
+  GLsizei splitVertices_ = 0;
   int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};

@@ -52,6 +52,29 @@ std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPat
   return out;
 }
 
+std::vector<glm::vec3> cloughTocherSplitLines(const std::vector<CloughTocherPatch>& patches) {
+  std::vector<glm::vec3> out;
+  for (const CloughTocherPatch& p : patches)
+    for (const Vec3& V : p.frame.V) {
+      out.push_back(glm::vec3(V));
+      out.push_back(glm::vec3(p.C));
+    }
+  return out;
+}
+
+std::vector<glm::vec3> powellSabinSplitLines(const std::vector<PowellSabinPatch>& patches) {
+  std::vector<glm::vec3> out;
+  for (const PowellSabinPatch& p : patches)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &a = p.frame.V[k], &b = p.frame.V[(k + 1) % 3];
+      for (const Vec3& end : {a, (1.0 - p.t[k]) * a + p.t[k] * b}) {
+        out.push_back(glm::vec3(p.Z));
+        out.push_back(glm::vec3(end));
+      }
+    }
+  return out;
+}
+
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches) {
   std::vector<BezierVertex> out;
   out.reserve(patches.size() * 18);

@@ -28,6 +28,11 @@ struct BezierVertex {
 // triangle patch; the CPU reference has it).
 std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
+
+// The lines that split each element into its pieces, two points per segment: Clough-Tocher
+// corners to the centroid; Powell-Sabin incenter to the corners and to the edge split points.
+std::vector<glm::vec3> cloughTocherSplitLines(const std::vector<CloughTocherPatch>& patches);
+std::vector<glm::vec3> powellSabinSplitLines(const std::vector<PowellSabinPatch>& patches);
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches);
 
 }  // namespace radview::gl
