@@ -21,6 +21,26 @@ void parseSize(const std::string& text, int& width, int& height) {
     throw Error("--size '" + text + "': each side must be within 1..16384");
 }
 
+gl::RenderSettings settingsFrom(const DisplayOptions& display) {
+  gl::RenderSettings settings;
+  settings.method = gl::shadingMethodFromName(display.method);
+  settings.perspectiveCorrect = !display.screenSpace;
+  settings.exposure = display.exposure;
+  settings.view = gl::displayViewFromName(display.view);
+  settings.elementEdges = display.edges;
+  settings.discontinuityEdges = display.discontinuities;
+  settings.tVertices = display.tVertices;
+  settings.repairTVertices = display.repairTVertices;
+  settings.splitLines = display.splitLines;
+  settings.tessellationTriangles = display.tessellationTriangles;
+  settings.cloughTocher = cloughTocherVariantFromName(display.variant);
+  settings.tessellation = parseTessellation(display.tessellation);
+  if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))
+    throw Error("--tolerance " + std::to_string(display.tolerance) + ": expected 0.01 .. 100 8-bit steps");
+  settings.tessellationTolerance = display.tolerance / 255.0;
+  return settings;
+}
+
 int parseTessellation(const std::string& text) {
   if (text == "exact") return 0;
   if (text == "adaptive") return gl::kAdaptiveTessellation;
@@ -38,20 +58,7 @@ int parseTessellation(const std::string& text) {
 
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out) {
-  gl::RenderSettings settings;
-  settings.method = gl::shadingMethodFromName(display.method);
-  settings.perspectiveCorrect = !display.screenSpace;
-  settings.exposure = display.exposure;
-  settings.elementEdges = display.edges;
-  settings.view = gl::displayViewFromName(display.view);
-  settings.discontinuityEdges = display.discontinuities;
-  settings.tVertices = display.tVertices;
-  settings.repairTVertices = display.repairTVertices;
-  settings.splitLines = display.splitLines;
-  settings.tessellationTriangles = display.tessellationTriangles;
-  settings.cloughTocher = cloughTocherVariantFromName(display.variant);
-  settings.tessellation = parseTessellation(display.tessellation);
-  settings.tessellationTolerance = display.tolerance / 255.0;
+  const gl::RenderSettings settings = settingsFrom(display);
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
 
   gl::EglContext context;

@@ -1,6 +1,8 @@
 #pragma once
 // The subcommands, each a plain options struct filled by CLI11 in main.cpp and a run
 // function that returns the exit status. Errors are thrown as radview::Error.
+#include "gl/mesh_renderer.h"
+
 #include <string>
 
 namespace radview {
@@ -64,6 +66,8 @@ int runSample(const SampleOptions& options);
 int runViewer(const ViewerOptions& options);
 
 struct ViewedFile;
+// The renderer's settings the display options ask for. Throws Error for a bad one.
+gl::RenderSettings settingsFrom(const DisplayOptions& display);
 // --tessellation as gl::RenderSettings::tessellation. Throws Error.
 int parseTessellation(const std::string& text);
 // Renders through EGL to a PNG at `out` and prints its path.

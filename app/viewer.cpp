@@ -170,19 +170,7 @@ int runViewer(const ViewerOptions& options) {
   glfwSwapInterval(1);
 
   ViewerState state;
-  state.settings.method = gl::shadingMethodFromName(options.display.method);
-  state.settings.perspectiveCorrect = !options.display.screenSpace;
-  state.settings.exposure = options.display.exposure;
-  state.settings.elementEdges = options.display.edges;
-  state.settings.view = gl::displayViewFromName(options.display.view);
-  state.settings.discontinuityEdges = options.display.discontinuities;
-  state.settings.tVertices = options.display.tVertices;
-  state.settings.repairTVertices = options.display.repairTVertices;
-  state.settings.splitLines = options.display.splitLines;
-  state.settings.tessellationTriangles = options.display.tessellationTriangles;
-  state.settings.cloughTocher = cloughTocherVariantFromName(options.display.variant);
-  state.settings.tessellation = parseTessellation(options.display.tessellation);
-  state.settings.tessellationTolerance = options.display.tolerance / 255.0;
+  state.settings = settingsFrom(options.display);
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
   adoptViewedFile(state, std::move(viewed));

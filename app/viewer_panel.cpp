@@ -133,11 +133,11 @@ void drawPanel(ViewerState& state) {
   const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
   if (state.settings.method >= gl::ShadingMethod::C1Quadratic)
     ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
   if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
 
   section("View");
   if (ImGui::Button("Rotate 45 deg [R]")) rotateView45(state);

@@ -1,7 +1,6 @@
 #include "gl/bezier_pass.h"
 
-#include "interp/tessellation_level.h"
-
+#include <algorithm>
 #include <cstddef>
 
 namespace radview::gl {
@@ -21,8 +20,8 @@ std::array<Rgb, 10> netOf(const BezierVertex& vertex) {
   return net;
 }
 
-// Triangles equal-spacing tessellation makes of a triangle at inner level L, bounded above
-// (outer levels at most L add at most 3 L more).
+// Triangles equal-spacing tessellation makes of a triangle whose levels are at most L, bounded
+// above.
 size_t trianglesAt(int L) { return size_t(L) * L + 3 * size_t(L); }
 
 }  // namespace
@@ -39,12 +38,18 @@ BezierPass::BezierPass() {
     glVertexArrayAttribFormat(vao_, attribute, attribute < 2 ? 3 : 4, GL_FLOAT, GL_FALSE, offset);
     glVertexArrayAttribBinding(vao_, attribute, 0);
   }
+  glCreateBuffers(1, &levelsVbo_);
+  glVertexArrayVertexBuffer(vao_, 1, levelsVbo_, 0, sizeof(glm::vec4));
+  glEnableVertexArrayAttrib(vao_, 10);
+  glVertexArrayAttribFormat(vao_, 10, 4, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vao_, 10, 1);
   glCreateQueries(GL_PRIMITIVES_GENERATED, 2, primitiveQueries_.data());
 }
 
 BezierPass::~BezierPass() {
   glDeleteVertexArrays(1, &vao_);
   glDeleteBuffers(1, &vbo_);
+  glDeleteBuffers(1, &levelsVbo_);
   glDeleteQueries(2, primitiveQueries_.data());
 }
 
@@ -52,6 +57,7 @@ void BezierPass::upload(std::vector<BezierVertex> vertices, int degree) {
   glNamedBufferData(vbo_, vertices.size() * sizeof(BezierVertex), vertices.data(), GL_STATIC_DRAW);
   vertices_ = std::move(vertices);
   degree_ = degree;
+  levelsFor_ = {-2, 0, 0};
 }
 
 void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation) {
@@ -102,31 +108,49 @@ void BezierPass::drawTriangles(const glm::mat4& clipFromWorld, const BezierEvalu
   glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
 }
 
-double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& draws) {
+void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
+  const std::array<double, 3> key = {double(evaluation.tessellation), evaluation.exposureScale, evaluation.tolerance};
+  if (key == levelsFor_) return;
   const size_t patches = vertices_.size() / 3;
-  // Each patch's inner level, as the control shader will choose it, to plan the batches.
-  std::vector<int> levels(patches, evaluation.tessellation);
-  if (evaluation.tessellation == kAdaptiveTessellation)
+  if (evaluation.tessellation == kAdaptiveTessellation) {
+    std::vector<std::array<Vec3, 3>> corners(patches);
+    std::vector<std::array<Rgb, 10>> nets(patches);
+    std::vector<const Rgb*> netPointers(patches);
     for (size_t p = 0; p < patches; ++p) {
-      const std::array<Rgb, 10> net = netOf(vertices_[3 * p]);
-      levels[p] = adaptiveTessellationLevels(degree_, net.data(), evaluation.exposureScale, evaluation.tolerance).inner;
+      for (int c = 0; c < 3; ++c) corners[p][c] = Vec3(vertices_[3 * p + c].position);
+      nets[p] = netOf(vertices_[3 * p]);
+      netPointers[p] = nets[p].data();
     }
+    levels_ = tessellationLevelsForPieces(degree_, corners, netPointers, evaluation.exposureScale, evaluation.tolerance);
+  } else {
+    const int L = evaluation.tessellation;
+    levels_.assign(patches, TessellationLevels{{L, L, L}, L});
+  }
+  std::vector<glm::vec4> perVertex;
+  perVertex.reserve(3 * patches);
+  for (const TessellationLevels& l : levels_)
+    for (int c = 0; c < 3; ++c) perVertex.push_back(glm::vec4(l.outer[0], l.outer[1], l.outer[2], l.inner));
+  glNamedBufferData(levelsVbo_, perVertex.size() * sizeof(glm::vec4), perVertex.data(), GL_DYNAMIC_DRAW);
+  levelsFor_ = key;
+}
+
+double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& draws) {
+  updateLevels(evaluation);
+  const size_t patches = vertices_.size() / 3;
   tessellated_.set("degree", degree_);
-  tessellated_.set("fixedLevel", evaluation.tessellation == kAdaptiveTessellation ? 0 : evaluation.tessellation);
-  tessellated_.set("exposureScale", float(evaluation.exposureScale));
-  tessellated_.set("tolerance", float(evaluation.tolerance));
   tessellated_.use();
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   size_t first = 0;
   double levelSum = 0.0;
+  auto trianglesOf = [&](size_t p) {
+    const TessellationLevels& l = levels_[p];
+    return trianglesAt(std::max({l.inner, l.outer[0], l.outer[1], l.outer[2]}));
+  };
   while (first < patches) {
     size_t count = 0, triangles = 0;
-    // The CPU's level may differ from the shader's by one where float and double round a
-    // bound differently: plan with one more.
-    while (first + count < patches &&
-           (count == 0 || triangles + trianglesAt(levels[first + count] + 1) <= kMaxTrianglesPerDraw)) {
-      triangles += trianglesAt(levels[first + count] + 1);
-      levelSum += levels[first + count];
+    while (first + count < patches && (count == 0 || triangles + trianglesOf(first + count) <= kMaxTrianglesPerDraw)) {
+      triangles += trianglesOf(first + count);
+      levelSum += levels_[first + count].inner;
       ++count;
     }
     glDrawArrays(GL_PATCHES, GLint(3 * first), GLsizei(3 * count));

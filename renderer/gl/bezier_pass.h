@@ -4,6 +4,7 @@
 // interpolated linearly between generated vertices (C&W §9.2).
 #include "gl/patch_vertices.h"
 #include "gl/shader_program.h"
+#include "interp/tessellation_level.h"
 
 #include <epoxy/gl.h>
 
@@ -50,11 +51,15 @@ class BezierPass {
 
  private:
   ShaderProgram perPixel_{{"bezier.vert", "bezier.frag"}};
-  // Issues the tessellated draws in batches; returns the inner-level sum of the patches.
+  // Sets the per-patch levels for `evaluation` (when they change), then issues the tessellated
+  // draws in batches; returns the inner-level sum of the patches.
   double drawTessellated(const BezierEvaluation& evaluation, size_t& draws);
+  void updateLevels(const BezierEvaluation& evaluation);
   ShaderProgram tessellated_{{"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}};
-  GLuint vao_ = 0, vbo_ = 0;
-  std::vector<BezierVertex> vertices_;  // kept for the CPU's batch planning
+  GLuint vao_ = 0, vbo_ = 0, levelsVbo_ = 0;
+  std::vector<BezierVertex> vertices_;
+  std::vector<TessellationLevels> levels_;  // per patch, as uploaded to levelsVbo_
+  std::array<double, 3> levelsFor_{-2, 0, 0};  // the tessellation, exposure scale, tolerance of levels_
   int degree_ = 3;
   std::array<GLuint, 2> primitiveQueries_{};
   int frame_ = 0;

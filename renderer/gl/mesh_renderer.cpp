@@ -117,7 +117,6 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 
 void MeshRenderer::uploadMesh(bool repairTVertices) {
   const RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(original_) : original_;
-  repairedDrawn_ = repairTVertices;
   const DisplayMesh display = buildDisplayMesh(mesh);
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
@@ -146,6 +145,7 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
   mesh_ = mesh;
   patchesFor_ = -1;
+  repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
 }
 
 void MeshRenderer::uploadPatches(const RenderSettings& settings) {
@@ -178,7 +178,9 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   // Errors left on this context by other code (the UI) are not this pass's to report.
   while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
+  // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
+  if (settings.method >= ShadingMethod::Quadratic) uploadPatches(settings);
   const bool timing = frame_ >= 2;
   if (timing) {
     GLuint64 ns = 0;
@@ -221,7 +223,6 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else {
-    uploadPatches(settings);
     BezierEvaluation evaluation;
     evaluation.tessellation = settings.tessellation;
     evaluation.tolerance = settings.tessellationTolerance;
@@ -297,6 +298,9 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   ++frame_;
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  glDisable(GL_DEPTH_TEST);
   if (GLenum error = glGetError(); error != GL_NO_ERROR)
     throw Error("OpenGL error " + hexCode(error) + " while rendering");
 }

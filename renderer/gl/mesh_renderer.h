@@ -59,9 +59,9 @@ struct RenderSettings {
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
   bool tVertices = false;           // markers
-  bool repairTVertices = false;
+  bool repairTVertices = false;  // draw elements with T-vertices as triangles through them (Baum et al.)
   bool splitLines = false;              // C1 methods: the lines that cut elements into Bezier pieces
-  bool tessellationTriangles = false;   // tessellated methods: the generated triangles     // draw elements with T-vertices as triangles through them (Baum et al.)
+  bool tessellationTriangles = false;   // tessellated methods: the generated triangles
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };

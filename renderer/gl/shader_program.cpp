@@ -70,8 +70,6 @@ std::string log(GLuint object, GetLog getLog) {
 
 }  // namespace
 
-std::string shaderSource(const std::string& name) { return expandIncludes(readRaw(name).text); }
-
 ShaderProgram::ShaderProgram(const std::vector<std::string>& stageFiles) {
   // Every source is read and every stage known before a GL object exists, so a missing file
   // leaks nothing.

@@ -10,9 +10,6 @@
 
 namespace radview::gl {
 
-// The text of shaders/<name> with its includes expanded. Throws Error if missing.
-std::string shaderSource(const std::string& name);
-
 class ShaderProgram {
  public:
   // Stage from the file extension (.vert .tesc .tese .geom .frag). Throws Error with the

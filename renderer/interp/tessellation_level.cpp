@@ -4,15 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 namespace radview {
 
+namespace {
+
+// Slope of the sRGB transfer function at linear value v (clamped below at 0).
 double srgbSlope(double v) {
   v = std::max(v, 0.0);
   return v <= 0.0031308 ? 12.92 : (1.055 / 2.4) * std::pow(v, -7.0 / 12.0);
 }
-
-namespace {
 
 // The control value with exponents (i, j, k) of a degree-n net.
 const Rgb& at(const Rgb* net, int n, int i, int j) { return net[bezierIndex(n, i, j)]; }
@@ -69,7 +72,33 @@ TessellationLevels adaptiveTessellationLevels(int n, const Rgb* net, double expo
     }
   for (int c = 0; c < 3; ++c)
     levels.outer[c] = levelFor(order / 8.0, edgeM[c], edgeDarkest[c], exposureScale, tolerance);
-  levels.inner = levelFor(order / 6.0, M, darkest, exposureScale, tolerance);
+  levels.inner = levelFor(order / 2.0, M, darkest, exposureScale, tolerance);  // rings: see the header
+  return levels;
+}
+
+std::vector<TessellationLevels> tessellationLevelsForPieces(int degree, const std::vector<std::array<Vec3, 3>>& corners,
+                                                           const std::vector<const Rgb*>& nets, double exposureScale,
+                                                           double tolerance) {
+  std::vector<TessellationLevels> levels(nets.size());
+  for (size_t p = 0; p < nets.size(); ++p)
+    levels[p] = adaptiveTessellationLevels(degree, nets[p], exposureScale, tolerance);
+  // Edges keyed by their corner positions rounded to float (pieces that share an edge share
+  // its corners to within that), endpoints in a fixed order.
+  using Key = std::array<float, 6>;
+  auto keyOf = [&](size_t p, int c) {
+    const glm::vec3 a(corners[p][(c + 1) % 3]), b(corners[p][(c + 2) % 3]);
+    const bool ordered = std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    const glm::vec3 &lo = ordered ? a : b, &hi = ordered ? b : a;
+    return Key{lo.x, lo.y, lo.z, hi.x, hi.y, hi.z};
+  };
+  std::map<Key, int> need;
+  for (size_t p = 0; p < nets.size(); ++p)
+    for (int c = 0; c < 3; ++c) {
+      int& level = need[keyOf(p, c)];
+      level = std::max({level, levels[p].outer[c], levels[p].inner});
+    }
+  for (size_t p = 0; p < nets.size(); ++p)
+    for (int c = 0; c < 3; ++c) levels[p].outer[c] = need[keyOf(p, c)];
   return levels;
 }
 

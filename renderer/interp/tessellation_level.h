@@ -13,18 +13,24 @@
 // (the weights' sum peaks at the centroid, 1/3); on an edge, a 1D curve, by (1/8) n (n-1) M_e
 // / L^2 with M_e from the edge's own controls. Exact for quadratic pieces; for cubics the
 // second derivative varies and the bound holds to first order.
+// OpenGL's equal-spacing pattern is not that uniform split but concentric rings, whose
+// triangles have edges up to ~1.15/L long and not along the edge directions, where the
+// second derivative reaches ~2.2 n (n-1) M (measured): (1.15^2 x 2.2) ~ 2.9 times the
+// uniform figure. The interior level therefore uses n (n-1) M / (2 L^2), three times it.
+// The outer level of an edge shared by two pieces is the larger of their interior levels (and
+// of the edge's own need), computed once for both (tessellationLevelsForPieces), so strip
+// triangles along an edge are no coarser than the interior and neighbours agree exactly.
 //
 // The display. B is scaled by the exposure s and sent through the sRGB curve, whose slope is
 // at most 12.92 and falls as the value rises: the error on screen is at most the error in B
 // times s times the slope at the piece's darkest value (its controls bound it: a Bezier piece
 // lies in the hull of its net), and zero once that is saturated (s min b >= 1).
 //
-// The level is the smallest L with that display error <= tolerance, clamped to 1..64. Outer
-// levels use only the edge's own control values, which the pieces on both sides of a C0 edge
-// share, so neighbours tessellate shared edges alike and no cracks open between them.
+// The level is the smallest L with that display error <= tolerance, clamped to 1..64.
 #include "core/types.h"
 
 #include <array>
+#include <vector>
 
 namespace radview {
 
@@ -37,9 +43,14 @@ struct TessellationLevels {
 TessellationLevels adaptiveTessellationLevels(int degree, const Rgb* net, double exposureScale,
                                               double tolerance);
 
-// Slope of the sRGB transfer function at linear value v (clamped below at 0).
-double srgbSlope(double v);
-
 inline constexpr int kMaxTessellationLevel = 64;
+
+// The levels of every piece of a set that tile surfaces (3 corners each, pieces sharing an
+// edge share its corner positions): each piece's own, with every shared edge's outer level
+// raised to the larger need of the pieces on its two sides, so both tessellate it alike.
+// `nets[p]` points at piece p's control values.
+std::vector<TessellationLevels> tessellationLevelsForPieces(int degree, const std::vector<std::array<Vec3, 3>>& corners,
+                                                           const std::vector<const Rgb*>& nets, double exposureScale,
+                                                           double tolerance);
 
 }  // namespace radview

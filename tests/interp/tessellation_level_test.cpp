@@ -1,6 +1,7 @@
-// The adaptive tessellation level keeps the display error of linear interpolation between
-// generated vertices under the tolerance: checked by tessellating on the CPU exactly as the
-// GPU's equal spacing does (uniform sub-triangles at the inner level) and measuring.
+// The adaptive tessellation level keeps the display error of linear interpolation under the
+// tolerance on a uniform split at the chosen level (the derivation's model; OpenGL's ring
+// pattern, for which the level carries a factor of three more, is checked on the GPU in
+// tests/gl/tessellation_test.cpp).
 #include "interp/bezier_triangle.h"
 #include "interp/tessellation_level.h"
 
