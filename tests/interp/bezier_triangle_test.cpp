@@ -1,92 +1,42 @@
 #include "interp/bezier_triangle.h"
 
+#include "tests/interp/test_fields.h"
+#include "tests/interp/test_print.h"
+
 #include <gtest/gtest.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <string>
+#include <vector>
 
 namespace radview {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-// gtest's messages do not find radview's operator<< for glm types.
-std::string str(const Vec3& v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
+using namespace test;
 
-glm::dmat3 randomRotation(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Vec3 axis = glm::normalize(Vec3(u(random), u(random), u(random)) + Vec3(1e-3));
-  return glm::dmat3(glm::rotate(glm::dmat4(1.0), 3.14159 * u(random), axis));
-}
-
-// A plane in 3D with an orthonormal frame: 2D coordinates (u, v) <-> points.
-struct Plane {
-  Vec3 origin, e1, e2;
-  Vec3 at(const Vec2& p) const { return origin + p.x * e1 + p.y * e2; }
-};
-Plane randomPlane(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-3.0, 3.0);
-  const glm::dmat3 R = randomRotation(random);
-  return {Vec3(u(random), u(random), u(random)), R[0], R[1]};
-}
-
-// q(p) = c + a.p + p^T H p / 2 per channel, in plane coordinates, and its blossom (polar
-// form) of degree n: the Bezier ordinate b_ijk of q is Q[V0 x i, V1 x j, V2 x k].
-struct Quadratic {
-  std::array<double, 3> c;
-  std::array<Vec2, 3> a;
-  std::array<glm::dmat2, 3> H;
-  Rgb operator()(const Vec2& p) const {
-    Rgb out;
-    for (int ch = 0; ch < 3; ++ch) out[ch] = c[ch] + glm::dot(a[ch], p) + 0.5 * glm::dot(p, H[ch] * p);
-    return out;
-  }
-  Rgb blossom(const std::vector<Vec2>& args) const {
-    const double n = double(args.size());
-    Rgb out;
-    for (int ch = 0; ch < 3; ++ch) {
-      double sum = c[ch];
-      for (const Vec2& p : args) sum += glm::dot(a[ch], p) / n;
-      // The quadratic part summed over the n(n-1)/2 pairs of arguments, weighted so that equal
-      // arguments give back p^T H p / 2.
-      for (size_t i = 0; i < args.size(); ++i)
-        for (size_t j = i + 1; j < args.size(); ++j) sum += glm::dot(args[i], H[ch] * args[j]) / (n * (n - 1));
-      out[ch] = sum;
-    }
-    return out;
-  }
-  RgbGradient gradient(const Plane& plane, const Vec2& p) const {
-    RgbGradient g;
-    for (int ch = 0; ch < 3; ++ch) {
-      const Vec2 d = a[ch] + H[ch] * p;
-      g[ch] = d.x * plane.e1 + d.y * plane.e2;
-    }
-    return g;
-  }
-};
-Quadratic randomQuadratic(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Quadratic q;
+// The blossom (polar form) of degree n of a quadratic q (t = 0): the Bezier ordinate b_ijk of
+// q is Q[V0 x i, V1 x j, V2 x k].
+Rgb blossom(const Polynomial& q, const std::vector<Vec2>& args) {
+  const double n = double(args.size());
+  Rgb out;
   for (int ch = 0; ch < 3; ++ch) {
-    q.c[ch] = u(random);
-    q.a[ch] = {u(random), u(random)};
-    const double off = u(random);
-    q.H[ch] = glm::dmat2(u(random), off, off, u(random));
+    double sum = q.c[ch];
+    for (const Vec2& p : args) sum += glm::dot(q.a[ch], p) / n;
+    // The quadratic part summed over the n(n-1)/2 pairs of arguments, weighted so that equal
+    // arguments give back p^T H p / 2.
+    for (size_t i = 0; i < args.size(); ++i)
+      for (size_t j = i + 1; j < args.size(); ++j) sum += glm::dot(args[i], q.H[ch] * args[j]) / (n * (n - 1));
+    out[ch] = sum;
   }
-  return q;
+  return out;
 }
 
 template <size_t N>
-std::array<Rgb, N> blossomNet(const Quadratic& q, const std::array<Vec2, 3>& V) {
+std::array<Rgb, N> blossomNet(const Polynomial& q, const std::array<Vec2, 3>& V) {
   constexpr int n = N == 6 ? 2 : 3;
   std::array<Rgb, N> b{};
   for (int i = n; i >= 0; --i)
@@ -95,7 +45,7 @@ std::array<Rgb, N> blossomNet(const Quadratic& q, const std::array<Vec2, 3>& V) 
       for (int r = 0; r < i; ++r) args.push_back(V[0]);
       for (int r = 0; r < j; ++r) args.push_back(V[1]);
       for (int r = 0; r < n - i - j; ++r) args.push_back(V[2]);
-      b[bezierIndex(n, i, j)] = q.blossom(args);
+      b[bezierIndex(n, i, j)] = blossom(q, args);
     }
   return b;
 }
@@ -159,11 +109,11 @@ TEST(BezierTriangle, NetOfAQuadraticGivesItsValueAndWorldGradient) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0), beyond(-0.2, 1.2);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec2, 3> p{Vec2(u(random), u(random)), Vec2(u(random), u(random)), Vec2(u(random), u(random))};
     const BarycentricFrame frame = barycentricFrame({plane.at(p[0]), plane.at(p[1]), plane.at(p[2])});
     if (frame.degenerate) continue;
-    const Quadratic q = randomQuadratic(random);
+    const Polynomial q = randomPolynomial(random, false);
     const auto net2 = blossomNet<6>(q, p);
     const auto net3 = blossomNet<10>(q, p);
     for (int s = 0; s < 10; ++s) {

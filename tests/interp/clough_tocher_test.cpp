@@ -1,14 +1,15 @@
 #include "interp/clough_tocher.h"
 
+#include "tests/interp/test_fields.h"
+#include "tests/interp/test_print.h"
+
 #include <gtest/gtest.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,64 +18,7 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-std::string str(const Vec3& v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
-// A plane in 3D with an orthonormal frame: 2D coordinates (u, v) <-> points.
-struct Plane {
-  Vec3 origin, e1, e2;
-  Vec3 at(const Vec2& p) const { return origin + p.x * e1 + p.y * e2; }
-  Vec3 vector(const Vec2& d) const { return d.x * e1 + d.y * e2; }
-};
-Plane randomPlane(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Vec3 axis = glm::normalize(Vec3(u(random), u(random), u(random)) + Vec3(1e-3));
-  const glm::dmat3 R = glm::dmat3(glm::rotate(glm::dmat4(1.0), 3.14159 * u(random), axis));
-  return {3.0 * Vec3(u(random), u(random), u(random)), R[0], R[1]};
-}
-
-// A polynomial per channel in plane coordinates, up to cubic: q(p) = c + a.p + p^T H p / 2 +
-// t (p.x^3, p.x^2 p.y, p.x p.y^2, p.y^3).
-struct Polynomial {
-  std::array<double, 3> c{};
-  std::array<Vec2, 3> a{};
-  std::array<glm::dmat2, 3> H{};
-  std::array<glm::dvec4, 3> t{};
-  Rgb operator()(const Vec2& p) const {
-    Rgb out;
-    for (int ch = 0; ch < 3; ++ch)
-      out[ch] = c[ch] + glm::dot(a[ch], p) + 0.5 * glm::dot(p, H[ch] * p) +
-                glm::dot(t[ch], glm::dvec4(p.x * p.x * p.x, p.x * p.x * p.y, p.x * p.y * p.y, p.y * p.y * p.y));
-    return out;
-  }
-  RgbGradient gradient(const Plane& plane, const Vec2& p) const {
-    RgbGradient g;
-    for (int ch = 0; ch < 3; ++ch) {
-      const glm::dvec4& k = t[ch];
-      const Vec2 d = a[ch] + H[ch] * p +
-                     Vec2(3 * k.x * p.x * p.x + 2 * k.y * p.x * p.y + k.z * p.y * p.y,
-                          k.y * p.x * p.x + 2 * k.z * p.x * p.y + 3 * k.w * p.y * p.y);
-      g[ch] = plane.vector(d);
-    }
-    return g;
-  }
-};
-Polynomial randomPolynomial(std::mt19937& random, bool cubic) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Polynomial q;
-  for (int ch = 0; ch < 3; ++ch) {
-    q.c[ch] = u(random);
-    q.a[ch] = {u(random), u(random)};
-    const double off = u(random);
-    q.H[ch] = glm::dmat2(u(random), off, off, u(random));
-    if (cubic) q.t[ch] = {u(random), u(random), u(random), u(random)};
-  }
-  return q;
-}
+using namespace test;
 
 enum class Variant { Book, Affine };
 const char* name(Variant v) { return v == Variant::Book ? "book" : "affine"; }
@@ -113,7 +57,7 @@ TEST(CloughTocher, InterpolatesCornerValuesAndGradients) {
   std::mt19937 random(1);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V{plane.at({u(random), u(random)}), plane.at({u(random), u(random)}),
                                 plane.at({u(random), u(random)})};
     std::array<Rgb, 3> f;
@@ -145,7 +89,7 @@ TEST(CloughTocher, EvaluatesThePieceThatHoldsThePoint) {
   std::mt19937 random(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0), u01(0.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V{plane.at({u(random), u(random)}), plane.at({u(random), u(random)}),
                                 plane.at({u(random), u(random)})};
     std::array<Rgb, 3> f;
@@ -181,7 +125,7 @@ struct ReproductionError {
 
 // Builds the patch of a polynomial from its exact corner gradients (and, for the full element,
 // its exact derivative at the edge midpoints) and measures how far it is from the polynomial.
-ReproductionError reproductionError(const Plane& plane, const std::array<Vec2, 3>& p, const Polynomial& q,
+ReproductionError reproductionError(const PlaneFrame& plane, const std::array<Vec2, 3>& p, const Polynomial& q,
                                     Variant variant, bool full, std::mt19937& random) {
   const std::array<Vec3, 3> V{plane.at(p[0]), plane.at(p[1]), plane.at(p[2])};
   std::array<Rgb, 3> f;
@@ -228,7 +172,7 @@ TEST(CloughTocher, ReproducesQuadraticsWithTheirGradients) {
     for (const double aspect : {1.0, 1e1, 1e3, 1e5, 1e7}) {
       ReproductionError worst[2];
       for (int trial = 0; trial < 20; ++trial) {
-        const Plane plane = randomPlane(random);
+        const PlaneFrame plane = randomPlane(random);
         std::array<Vec2, 3> p = sliver(needle, 1.0 / aspect);
         std::rotate(p.begin(), p.begin() + trial % 3, p.end());
         const Polynomial q = randomPolynomial(random, false);
@@ -257,7 +201,7 @@ TEST(CloughTocher, ReproducesQuadraticsWithTheirGradients) {
 TEST(CloughTocher, ReproducesQuadraticsAtEveryScale) {
   std::mt19937 random(3);
   for (const double size : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
-    Plane plane = randomPlane(random);
+    PlaneFrame plane = randomPlane(random);
     plane.origin *= size;
     std::array<Vec2, 3> p{Vec2(0.1, -0.2), Vec2(0.9, 0.1), Vec2(0.3, 0.7)};
     for (Vec2& v : p) v *= size;
@@ -279,7 +223,7 @@ TEST(CloughTocher, FullElementReproducesCubics) {
   std::mt19937 random(4);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec2, 3> p{Vec2(u(random), u(random)), Vec2(u(random), u(random)), Vec2(u(random), u(random))};
     const Polynomial q = randomPolynomial(random, true);
     for (const Variant variant : {Variant::Book, Variant::Affine}) {
@@ -295,7 +239,7 @@ TEST(CloughTocher, FullElementReproducesCubics) {
 // Two coplanar triangles T = (A, B, P) and T' = (B, A, Q) sharing edge 0 (A -> B in T), with
 // random values and gradients; the one-sided values and gradients at points along the edge.
 struct EdgePair {
-  Plane plane;
+  PlaneFrame plane;
   std::array<Vec3, 3> V, W;  // T, T'
   std::array<Rgb, 3> f, fW;
   std::array<RgbGradient, 3> g, gW;
@@ -406,7 +350,7 @@ TEST(CloughTocher, PiecesJoinC1AcrossTheInnerEdges) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V{plane.at({u(random), u(random)}), plane.at({u(random), u(random)}),
                                 plane.at({u(random), u(random)})};
     std::array<Rgb, 3> f;
@@ -448,7 +392,7 @@ TEST(CloughTocher, PiecesJoinC1AcrossTheInnerEdges) {
 TEST(CloughTocher, DAndEAreOnThePlanesOfTheirWedges) {
   std::mt19937 random(8);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Plane plane = randomPlane(random);
+  const PlaneFrame plane = randomPlane(random);
   const std::array<Vec3, 3> V{plane.at({0.0, 0.0}), plane.at({1.0, 0.1}), plane.at({0.2, 0.9})};
   std::array<Rgb, 3> f;
   std::array<RgbGradient, 3> g;
@@ -490,7 +434,7 @@ TEST(CloughTocher, BookVariantAmplifiesValuesOnNeedles) {
   for (const double aspect : {1e1, 1e2, 1e3, 1e5, 1e7}) {
     double ratio[2] = {0.0, 0.0}, scipyExample[2] = {0.0, 0.0};
     for (int trial = 0; trial < 20; ++trial) {
-      const Plane plane = randomPlane(random);
+      const PlaneFrame plane = randomPlane(random);
       const std::array<Vec2, 3> p = sliver(true, 1.0 / aspect);
       const std::array<Vec3, 3> V{plane.at(p[0]), plane.at(p[1]), plane.at(p[2])};
       const Vec2 slope(u(random), u(random));
@@ -531,7 +475,7 @@ TEST(CloughTocher, BookVariantAmplifiesValuesOnNeedles) {
 TEST(CloughTocher, DirectionAlongTheEdgeFallsBackOnTheNormal) {
   std::mt19937 random(10);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Plane plane = randomPlane(random);
+  const PlaneFrame plane = randomPlane(random);
   const std::array<Vec3, 3> V{plane.at({0.0, 0.0}), plane.at({1.0, 0.2}), plane.at({0.3, 0.8})};
   std::array<Rgb, 3> f;
   std::array<RgbGradient, 3> g;

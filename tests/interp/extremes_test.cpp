@@ -76,18 +76,7 @@ RadiosityMesh needleMesh(double aspect, const Field& f) {
       if (ys[j] == 0.5 + delta && i > 0 && i < n) p.x += delta * (i % 2 ? 1.0 : -0.7);
       mesh.nodes.push_back({plane.at(p.x, p.y), f(p), {}});
     }
-  auto id = [n](int i, int j) { return uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j + 1 < int(ys.size()); ++j)
-    for (int i = 0; i < n; ++i) {
-      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if ((i + j) % 2) {
-        mesh.elements.push_back(Element{{a, b, c}, {}, 0, 0});
-        mesh.elements.push_back(Element{{a, c, d}, {}, 0, 0});
-      } else {
-        mesh.elements.push_back(Element{{a, b, d}, {}, 0, 0});
-        mesh.elements.push_back(Element{{b, c, d}, {}, 0, 0});
-      }
-    }
+  addGridCells(mesh, n, int(ys.size()) - 1, false, [](int i, int j) { return (i + j) % 2 != 0; });
   return mesh;
 }
 

@@ -1,5 +1,8 @@
 #include "interp/powell_sabin.h"
 
+#include "tests/interp/test_fields.h"
+#include "tests/interp/test_print.h"
+
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -7,7 +10,6 @@
 #include <cmath>
 #include <limits>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,53 +18,7 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-std::string str(const Vec3& v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-
-// A plane in 3D with an orthonormal frame: 2D coordinates (u, v) <-> points.
-struct Plane {
-  Vec3 origin, e1, e2;
-  Vec3 at(const Vec2& p) const { return origin + p.x * e1 + p.y * e2; }
-  Vec3 vector(const Vec2& d) const { return d.x * e1 + d.y * e2; }
-};
-Plane randomPlane(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Vec3 axis = glm::normalize(Vec3(u(random), u(random), u(random)) + Vec3(1e-3));
-  const glm::dmat3 R = glm::dmat3(glm::rotate(glm::dmat4(1.0), 3.14159 * u(random), axis));
-  return {3.0 * Vec3(u(random), u(random), u(random)), R[0], R[1]};
-}
-
-// q(p) = c + a.p + p^T H p / 2 per channel, in plane coordinates.
-struct Quadratic {
-  std::array<double, 3> c{};
-  std::array<Vec2, 3> a{};
-  std::array<glm::dmat2, 3> H{};
-  Rgb operator()(const Vec2& p) const {
-    Rgb out;
-    for (int ch = 0; ch < 3; ++ch) out[ch] = c[ch] + glm::dot(a[ch], p) + 0.5 * glm::dot(p, H[ch] * p);
-    return out;
-  }
-  RgbGradient gradient(const Plane& plane, const Vec2& p) const {
-    RgbGradient g;
-    for (int ch = 0; ch < 3; ++ch) g[ch] = plane.vector(a[ch] + H[ch] * p);
-    return g;
-  }
-};
-Quadratic randomQuadratic(std::mt19937& random) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Quadratic q;
-  for (int ch = 0; ch < 3; ++ch) {
-    q.c[ch] = u(random);
-    q.a[ch] = {u(random), u(random)};
-    const double off = u(random);
-    q.H[ch] = glm::dmat2(u(random), off, off, u(random));
-  }
-  return q;
-}
+using namespace test;
 
 std::array<Vec3, 3> midpoints(const std::array<Vec3, 3>& V) {
   return {0.5 * (V[0] + V[1]), 0.5 * (V[1] + V[2]), 0.5 * (V[2] + V[0])};
@@ -73,7 +29,7 @@ struct RandomData {
   std::array<RgbGradient, 3> g;
   double gradientScale = 0.0;
 };
-RandomData randomData(std::mt19937& random, const Plane& plane) {
+RandomData randomData(std::mt19937& random, const PlaneFrame& plane) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   RandomData d;
   for (int i = 0; i < 3; ++i) {
@@ -86,7 +42,7 @@ RandomData randomData(std::mt19937& random, const Plane& plane) {
   return d;
 }
 
-std::array<Vec3, 3> randomTriangle(std::mt19937& random, const Plane& plane) {
+std::array<Vec3, 3> randomTriangle(std::mt19937& random, const PlaneFrame& plane) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   return {plane.at({u(random), u(random)}), plane.at({u(random), u(random)}), plane.at({u(random), u(random)})};
 }
@@ -113,7 +69,7 @@ TEST(PowellSabin, IncenterIsEquidistantFromTheSides) {
 // Two triangles T = (A, B, P) and T' = (B, A, Q) sharing edge 0 (A -> B in T), each side's
 // gradients at A and B the same.
 struct EdgePair {
-  Plane plane;
+  PlaneFrame plane;
   std::array<Vec3, 3> V, W;
   RandomData dataV, dataW;
 };
@@ -173,7 +129,7 @@ TEST(PowellSabin, EdgeSplitPointOfFlatNeighbours) {
 TEST(PowellSabin, InterpolatesCornerValuesAndGradients) {
   std::mt19937 random(3);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V = randomTriangle(random, plane);
     const RandomData d = randomData(random, plane);
     const PowellSabinPatch patch = buildPowellSabin(V, d.f, d.g, midpoints(V));
@@ -196,7 +152,7 @@ TEST(PowellSabin, EvaluatesThePieceThatHoldsThePoint) {
   std::mt19937 random(4);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 50; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V = randomTriangle(random, plane);
     const RandomData d = randomData(random, plane);
     std::array<Vec3, 3> R;
@@ -238,13 +194,13 @@ TEST(PowellSabin, ReproducesQuadraticsWithTheirGradients) {
       const double h = 1.0 / aspect;
       double valueError = 0.0, gradientError = 0.0;
       for (int trial = 0; trial < 20; ++trial) {
-        const Plane plane = randomPlane(random);
+        const PlaneFrame plane = randomPlane(random);
         std::array<Vec2, 3> p = aspect == 1.0
                                     ? std::array<Vec2, 3>{Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 0.8660254037844386)}
                                 : needle ? std::array<Vec2, 3>{Vec2(0, 0), Vec2(0, 1), Vec2(h, h)}
                                          : std::array<Vec2, 3>{Vec2(0, 0), Vec2(1, 0), Vec2(0.4, h)};
         std::rotate(p.begin(), p.begin() + trial % 3, p.end());
-        const Quadratic q = randomQuadratic(random);
+        const Polynomial q = randomPolynomial(random, false);
         const std::array<Vec3, 3> V{plane.at(p[0]), plane.at(p[1]), plane.at(p[2])};
         std::array<Rgb, 3> f;
         std::array<RgbGradient, 3> g;
@@ -287,11 +243,11 @@ TEST(PowellSabin, ReproducesQuadraticsWithTheirGradients) {
 TEST(PowellSabin, ReproducesQuadraticsAtEveryScale) {
   std::mt19937 random(6);
   for (const double size : {1e-6, 1e-3, 1.0, 1e3, 1e6}) {
-    Plane plane = randomPlane(random);
+    PlaneFrame plane = randomPlane(random);
     plane.origin *= size;
     std::array<Vec2, 3> p{Vec2(0.1, -0.2), Vec2(0.9, 0.1), Vec2(0.3, 0.7)};
     for (Vec2& v : p) v *= size;
-    Quadratic q = randomQuadratic(random);
+    Polynomial q = randomPolynomial(random, false);
     for (int ch = 0; ch < 3; ++ch) {
       q.a[ch] /= size;
       q.H[ch] /= size * size;
@@ -372,7 +328,7 @@ TEST(PowellSabin, PiecesJoinC1AcrossTheInnerEdges) {
   std::mt19937 random(9);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (int trial = 0; trial < 100; ++trial) {
-    const Plane plane = randomPlane(random);
+    const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V = randomTriangle(random, plane);
     const RandomData d = randomData(random, plane);
     std::array<Vec3, 3> R;

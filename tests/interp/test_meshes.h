@@ -4,6 +4,7 @@
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
 #include "mesh/topology.h"
+#include "tests/interp/test_print.h"
 
 #include <algorithm>
 #include <array>
@@ -30,6 +31,27 @@ struct Plane {
 
 using Field = std::function<Rgb(const Vec2&)>;
 
+// The cells of a grid whose (columns + 1) x (rows + 1) nodes are numbered row by row: each a
+// quad, or two triangles cut along the diagonal a c where alongAC(i, j), else along b d
+// (alongAC is called once per cell, row by row, and only for triangles).
+inline void addGridCells(RadiosityMesh& mesh, int columns, int rows, bool quads,
+                         const std::function<bool(int, int)>& alongAC) {
+  auto id = [columns](int i, int j) { return uint32_t(j * (columns + 1) + i); };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      if (quads) {
+        mesh.elements.push_back(Element{{a, b, c, d}, {}, 0, 0});
+      } else if (alongAC(i, j)) {
+        mesh.elements.push_back(Element{{a, b, c}, {}, 0, 0});
+        mesh.elements.push_back(Element{{a, c, d}, {}, 0, 0});
+      } else {
+        mesh.elements.push_back(Element{{a, b, d}, {}, 0, 0});
+        mesh.elements.push_back(Element{{b, c, d}, {}, 0, 0});
+      }
+    }
+}
+
 // n x n cells over [0,1]^2, nodes jittered by up to `jitter` of a cell (boundary nodes stay on
 // the boundary), each cell cut into two triangles along a random diagonal, or kept as a quad.
 inline RadiosityMesh gridMesh(int n, bool quads, double jitter, const Field& f, uint32_t seed,
@@ -46,20 +68,7 @@ inline RadiosityMesh gridMesh(int n, bool quads, double jitter, const Field& f, 
       if (j > 0 && j < n) p.y += offset(random) * h;
       mesh.nodes.push_back({plane.at(p.x, p.y), f(p), {}});
     }
-  auto id = [n](int i, int j) { return uint32_t(j * (n + 1) + i); };
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-      if (quads) {
-        mesh.elements.push_back(Element{{a, b, c, d}, {}, 0, 0});
-      } else if (random() % 2) {
-        mesh.elements.push_back(Element{{a, b, c}, {}, 0, 0});
-        mesh.elements.push_back(Element{{a, c, d}, {}, 0, 0});
-      } else {
-        mesh.elements.push_back(Element{{a, b, d}, {}, 0, 0});
-        mesh.elements.push_back(Element{{b, c, d}, {}, 0, 0});
-      }
-    }
+  addGridCells(mesh, n, n, quads, [&](int, int) { return random() % 2 != 0; });
   return mesh;
 }
 
@@ -373,14 +382,6 @@ inline double maxAbsB(const RadiosityMesh& mesh, std::initializer_list<uint32_t>
       for (uint32_t n : *list) out = std::max({out, std::abs(mesh.nodes[n].B.x), std::abs(mesh.nodes[n].B.y),
                                               std::abs(mesh.nodes[n].B.z)});
   return out;
-}
-
-// A point, for failure messages (gtest's << does not find radview's operator<< for glm types).
-inline std::string str(const Vec3& v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
 }
 
 // An element with its nodes, for failure messages: the failing input, printed.
