@@ -234,13 +234,16 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
   // Pass 2: tone map into the display target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
   glDisable(GL_DEPTH_TEST);
-  toneMapProgram_.set("exposureScale", static_cast<float>(std::exp2(settings.exposure)));
-  toneMapProgram_.set("background", settings.background);
-  toneMapProgram_.set("linearRadiosity", 0);
-  toneMapProgram_.set("view", static_cast<int>(settings.view));
-  toneMapProgram_.set("gradientScale", float(settings.gradientScale));
-  toneMapProgram_.set("isolineCount", settings.isolineCount);
-  toneMapProgram_.use();
+  const ShaderProgram& display = settings.view == DisplayView::Normal ? toneMapProgram_ : falseColourProgram_;
+  display.set("exposureScale", static_cast<float>(std::exp2(settings.exposure)));
+  display.set("background", settings.background);
+  display.set("linearRadiosity", 0);
+  if (settings.view != DisplayView::Normal) {
+    display.set("view", static_cast<int>(settings.view));
+    display.set("gradientScale", float(settings.gradientScale));
+    display.set("isolineCount", settings.isolineCount);
+  }
+  display.use();
   glBindTextureUnit(0, targets_.linearTexture());
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);

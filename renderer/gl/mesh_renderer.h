@@ -91,6 +91,7 @@ class MeshRenderer {
   RenderTargets targets_;
   ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
+  ShaderProgram falseColourProgram_{{"fullscreen.vert", "false_colour.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
   ShaderProgram polygonProgram_{{"polygon.vert", "polygon.frag"}};
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
