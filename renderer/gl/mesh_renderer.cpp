@@ -57,44 +57,40 @@ std::vector<T> readPixels(GLuint framebuffer, GLenum colorBuffer, int width, int
 
 }  // namespace
 
+namespace {
+
+// A vertex array reading one buffer of `stride`-byte vertices, and the buffer.
+void createVertexArray(GLuint& vao, GLuint& vbo, GLsizei stride) {
+  glCreateVertexArrays(1, &vao);
+  glCreateBuffers(1, &vbo);
+  glVertexArrayVertexBuffer(vao, 0, vbo, 0, stride);
+}
+
+// Float attribute `index` of `components` at byte `offset` in each vertex.
+void floatAttribute(GLuint vao, GLuint index, GLint components, size_t offset) {
+  glEnableVertexArrayAttrib(vao, index);
+  glVertexArrayAttribFormat(vao, index, components, GL_FLOAT, GL_FALSE, GLuint(offset));
+  glVertexArrayAttribBinding(vao, index, 0);
+}
+
+}  // namespace
+
 MeshRenderer::MeshRenderer() {
-  glCreateVertexArrays(1, &meshVao_);
-  glCreateBuffers(1, &meshVbo_);
-  glVertexArrayVertexBuffer(meshVao_, 0, meshVbo_, 0, sizeof(DisplayVertex));
-  const GLuint offsets[] = {offsetof(DisplayVertex, position), offsetof(DisplayVertex, B),
-                            offsetof(DisplayVertex, Bflat)};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
-    glEnableVertexArrayAttrib(meshVao_, attribute);
-    glVertexArrayAttribFormat(meshVao_, attribute, 3, GL_FLOAT, GL_FALSE, offsets[attribute]);
-    glVertexArrayAttribBinding(meshVao_, attribute, 0);
-  }
+  createVertexArray(meshVao_, meshVbo_, sizeof(DisplayVertex));
+  floatAttribute(meshVao_, 0, 3, offsetof(DisplayVertex, position));
+  floatAttribute(meshVao_, 1, 3, offsetof(DisplayVertex, B));
+  floatAttribute(meshVao_, 2, 3, offsetof(DisplayVertex, Bflat));
   glEnableVertexArrayAttrib(meshVao_, 3);
   glVertexArrayAttribIFormat(meshVao_, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
   glVertexArrayAttribBinding(meshVao_, 3, 0);
 
-  glCreateVertexArrays(1, &edgeVao_);
-  glCreateBuffers(1, &edgeVbo_);
-  glVertexArrayVertexBuffer(edgeVao_, 0, edgeVbo_, 0, sizeof(glm::vec3));
-  glEnableVertexArrayAttrib(edgeVao_, 0);
-  glVertexArrayAttribFormat(edgeVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(edgeVao_, 0, 0);
-
-  glCreateVertexArrays(1, &overlayVao_);
-  glCreateBuffers(1, &overlayVbo_);
-  glVertexArrayVertexBuffer(overlayVao_, 0, overlayVbo_, 0, sizeof(OverlayVertex));
-  glEnableVertexArrayAttrib(overlayVao_, 0);
-  glVertexArrayAttribFormat(overlayVao_, 0, 3, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, position));
-  glVertexArrayAttribBinding(overlayVao_, 0, 0);
-  glEnableVertexArrayAttrib(overlayVao_, 1);
-  glVertexArrayAttribFormat(overlayVao_, 1, 4, GL_FLOAT, GL_FALSE, offsetof(OverlayVertex, color));
-  glVertexArrayAttribBinding(overlayVao_, 1, 0);
-
-  glCreateVertexArrays(1, &splitVao_);
-  glCreateBuffers(1, &splitVbo_);
-  glVertexArrayVertexBuffer(splitVao_, 0, splitVbo_, 0, sizeof(glm::vec3));
-  glEnableVertexArrayAttrib(splitVao_, 0);
-  glVertexArrayAttribFormat(splitVao_, 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(splitVao_, 0, 0);
+  createVertexArray(edgeVao_, edgeVbo_, sizeof(glm::vec3));
+  floatAttribute(edgeVao_, 0, 3, 0);
+  createVertexArray(splitVao_, splitVbo_, sizeof(glm::vec3));
+  floatAttribute(splitVao_, 0, 3, 0);
+  createVertexArray(overlayVao_, overlayVbo_, sizeof(OverlayVertex));
+  floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
+  floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, color));
 
   glCreateBuffers(1, &polygonCorners_);
   glCreateBuffers(1, &polygonOffsets_);
