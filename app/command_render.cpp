@@ -33,6 +33,9 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   settings.repairTVertices = display.repairTVertices;
   settings.splitLines = display.splitLines;
   settings.tessellationTriangles = display.tessellationTriangles;
+  if (!(display.surface >= 0.0 && display.surface <= 10.0))
+    throw Error("--surface " + std::to_string(display.surface) + ": expected a height fraction 0 .. 10");
+  settings.surfaceHeight = display.surface;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
   settings.tessellation = parseTessellation(display.tessellation);
   if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))

@@ -26,7 +26,7 @@ const char* shortcutHelp() {
          "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
          "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
-         "W tessellation triangles,\n"
+         "W tessellation triangles, H radiosity surface (fig. 9.13),\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -136,6 +136,16 @@ void drawPanel(ViewerState& state) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
   if (state.settings.method >= gl::ShadingMethod::C1Quadratic)
     ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
+  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+    bool surface = state.settings.surfaceHeight > 0.0;
+    if (ImGui::Checkbox("Radiosity surface, fig. 9.13 [H]", &surface)) state.settings.surfaceHeight = surface ? 0.15 : 0.0;
+    if (surface) {
+      float height = float(state.settings.surfaceHeight);
+      ImGui::PushItemWidth(200);
+      if (ImGui::SliderFloat("Height", &height, 0.01f, 1.0f, "%.2f")) state.settings.surfaceHeight = height;
+      ImGui::PopItemWidth();
+    }
+  }
   if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
 

@@ -86,6 +86,7 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
   }
   tessellated_.set("clipFromWorld", clipFromWorld);
   tessellated_.set("wireframe", 0);
+  tessellated_.set("shadeSurface", evaluation.surfaceHeight > 0.0 ? 1 : 0);
   glBeginQuery(GL_PRIMITIVES_GENERATED, primitiveQueries_[frame_ % 2]);
   size_t draws = 0;
   const double levelSum = drawTessellated(evaluation, draws);
@@ -138,6 +139,8 @@ double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& d
   updateLevels(evaluation);
   const size_t patches = vertices_.size() / 3;
   tessellated_.set("degree", degree_);
+  tessellated_.set("heightScale", float(evaluation.surfaceHeight));
+  tessellated_.set("eye", evaluation.eye);
   tessellated_.use();
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   size_t first = 0;

@@ -20,6 +20,10 @@ struct BezierEvaluation {
   int tessellation = 0;
   double tolerance = 0.5 / 255.0;  // display units (an 8-bit step is 1/255)
   double exposureScale = 1.0;      // 2^exposure, which the display error depends on
+  // Radiosity surface (fig. 9.13): > 0 lifts each point off its element by this many world
+  // units per unit of luminance, shaded for the eye at `eye`; needs tessellation.
+  double surfaceHeight = 0.0;
+  glm::vec3 eye{0.0f};
 };
 
 inline constexpr int kAdaptiveTessellation = -1;

@@ -140,6 +140,12 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
   mesh_ = mesh;
+  brightestLuminance_ = 0.0;
+  for (const Element& e : mesh.elements)
+    if (!mesh.materials[e.material].isEmitter())
+      for (uint32_t n : e.corners)
+        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
+  if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
   patchesFor_ = -1;
   repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
 }
@@ -170,7 +176,27 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings) {
   patchesFor_ = wanted;
 }
 
-void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, int width, int height) {
+BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, const Camera& camera) const {
+  BezierEvaluation evaluation;
+  evaluation.tessellation = settings.tessellation;
+  evaluation.tolerance = settings.tessellationTolerance;
+  evaluation.exposureScale = std::exp2(settings.exposure);
+  if (settings.surfaceHeight > 0.0) {
+    evaluation.surfaceHeight = settings.surfaceHeight * mesh_.bounds().diagonal() / brightestLuminance_;
+    evaluation.eye = glm::vec3(camera.eye);
+    if (evaluation.tessellation == 0) evaluation.tessellation = kAdaptiveTessellation;
+  }
+  return evaluation;
+}
+
+void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settings, int width, int height) {
+  // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
+  Camera camera = viewCamera;
+  if (settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic) {
+    const double lift = settings.surfaceHeight * mesh_.bounds().diagonal();
+    camera.zFar += lift;
+    camera.zNear = std::max(camera.zNear - lift, camera.zFar * 1e-4);
+  }
   // Errors left on this context by other code (the UI) are not this pass's to report.
   while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
@@ -219,11 +245,7 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else {
-    BezierEvaluation evaluation;
-    evaluation.tessellation = settings.tessellation;
-    evaluation.tolerance = settings.tessellationTolerance;
-    evaluation.exposureScale = std::exp2(settings.exposure);
-    bezierPass_.draw(clipFromWorld, evaluation);
+    bezierPass_.draw(clipFromWorld, bezierEvaluation(settings, camera));
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 
@@ -261,13 +283,8 @@ void MeshRenderer::render(const Camera& camera, const RenderSettings& settings, 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    if (settings.tessellationTriangles) {
-      BezierEvaluation evaluation;
-      evaluation.tessellation = settings.tessellation;
-      evaluation.tolerance = settings.tessellationTolerance;
-      evaluation.exposureScale = std::exp2(settings.exposure);
-      bezierPass_.drawTriangles(clipFromWorld, evaluation, kTessellationColor);
-    }
+    if (settings.tessellationTriangles)
+      bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColor);
     if (settings.splitLines && splitVertices_ > 0) {
       linesProgram_.set("clipFromWorld", clipFromWorld);
       linesProgram_.set("color", kSplitLineColor);

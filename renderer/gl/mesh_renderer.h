@@ -62,6 +62,10 @@ struct RenderSettings {
   bool repairTVertices = false;  // draw elements with T-vertices as triangles through them (Baum et al.)
   bool splitLines = false;              // C1 methods: the lines that cut elements into Bezier pieces
   bool tessellationTriangles = false;   // tessellated methods: the generated triangles
+  // Quadratic and C1 methods: the radiosity surface of fig. 9.13, B as a height over each
+  // element, its tallest point (of non-emitting elements) at this fraction of the scene's
+  // size; 0 is off. Drawn tessellated (adaptively when the method is set to per pixel).
+  double surfaceHeight = 0.0;
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -106,6 +110,9 @@ class MeshRenderer {
   void uploadMesh(bool repairTVertices);
   RadiosityMesh original_;      // as set
   RadiosityMesh mesh_;          // as drawn: the original, or with its T-vertices repaired
+  double brightestLuminance_ = 1.0;  // of the non-emitting elements' nodes, for the surface view
+  // The Bezier pass's settings for this frame.
+  BezierEvaluation bezierEvaluation(const RenderSettings& settings, const Camera& camera) const;
   bool repairedDrawn_ = false;
   BezierPass bezierPass_;
   GLuint splitVao_ = 0, splitVbo_ = 0;

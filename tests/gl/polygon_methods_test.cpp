@@ -181,3 +181,38 @@ TEST(DisplayViews, ValueViewDrawsItsColourBar) {
 
 }  // namespace
 }  // namespace radview::gl
+
+namespace radview::gl {
+namespace {
+
+// The fig. 9.8 quad seen exactly edge-on: flat, it covers no pixel; as the radiosity surface
+// (fig. 9.13) its values stand up out of its plane and are seen, finite.
+size_t coveredEdgeOn(double surfaceHeight) {
+  EglContext context;
+  MeshRenderer renderer;
+  renderer.setMesh(loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/fig9_8_quad.gltf").mesh);
+  Camera camera;
+  camera.eye = {0.0, -2.0, 0.0};
+  camera.up = {0, 0, 1};
+  camera.zNear = 0.1;
+  camera.zFar = 10;
+  RenderSettings settings;
+  settings.method = ShadingMethod::CloughTocher;
+  settings.surfaceHeight = surfaceHeight;
+  renderer.render(camera, settings, 80, 80);
+  const LinearImage image = renderer.readLinear();
+  size_t covered = 0;
+  for (size_t i = 0; i < image.rgba.size(); i += 4) {
+    for (int c = 0; c < 3; ++c) EXPECT_FALSE(std::isnan(image.rgba[i + c]));
+    covered += image.rgba[i + 3] > 0.0f;
+  }
+  return covered;
+}
+
+TEST(RadiositySurface, RaisesTheValuesOutOfTheElementsPlane) {
+  EXPECT_EQ(coveredEdgeOn(0.0), 0u);
+  EXPECT_GT(coveredEdgeOn(0.25), 200u);
+}
+
+}  // namespace
+}  // namespace radview::gl
