@@ -1,12 +1,11 @@
 #include "solve/direct_light.h"
 
+#include "core/parallel_for.h"
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"
 #include "solve/form_factor.h"
 
 #include <algorithm>
-#include <atomic>
-#include <thread>
 
 namespace radview {
 
@@ -28,22 +27,6 @@ std::vector<uint32_t> firstElementOfNodes(const RadiosityMesh& mesh) {
     for (uint32_t node : mesh.elements[e].midEdge) first[node] = std::min(first[node], e);
   }
   return first;
-}
-
-// Runs body(i) for i in [0, count) on all cores, in blocks taken from a shared counter.
-template <typename Body>
-void parallelFor(size_t count, const Body& body) {
-  constexpr size_t kBlock = 256;
-  std::atomic<size_t> next{0};
-  auto work = [&] {
-    for (size_t begin = next.fetch_add(kBlock); begin < count; begin = next.fetch_add(kBlock))
-      for (size_t i = begin; i < std::min(count, begin + kBlock); ++i) body(i);
-  };
-  const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-  std::vector<std::thread> helpers;
-  for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
-  work();
-  for (std::thread& helper : helpers) helper.join();
 }
 
 }  // namespace
