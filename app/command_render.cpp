@@ -36,6 +36,8 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   if (!(display.surface >= 0.0 && display.surface <= 10.0))
     throw Error("--surface " + std::to_string(display.surface) + ": expected a height fraction 0 .. 10");
   settings.surfaceHeight = display.surface;
+  if (display.controlNet && display.surface == 0.0) throw Error("--control-net needs --surface");
+  settings.controlNet = display.controlNet;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
   settings.tessellation = parseTessellation(display.tessellation);
   if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))

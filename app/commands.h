@@ -20,6 +20,7 @@ struct DisplayOptions {
   bool splitLines = false;       // overlay the Bezier pieces' boundaries
   bool tessellationTriangles = false;  // overlay the generated triangles
   double surface = 0.0;  // radiosity surface (fig. 9.13): its height as a fraction of the scene; 0 off
+  bool controlNet = false;  // with --surface: the Bezier control net
   std::string variant = "affine";  // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps

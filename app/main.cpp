@@ -49,6 +49,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_option("--surface", d.surface,
                      "quadratic, c1-quadratic, clough-tocher: draw the radiosity surface (fig. 9.13), B as a "
                      "height over each element, the tallest a fraction H of the scene's size (e.g. 0.15)");
+  command.add_flag("--control-net", d.controlNet, "With --surface: draw the surface's Bezier control net (fig. 9.13)");
   command.add_flag("--repair-t-vertices", d.repairTVertices,
                    "Triangulate every element that has a T-vertex through it before drawing (Baum et al.)");
   command.add_option("--tessellation", d.tessellation,

@@ -52,6 +52,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_L: s.settings.splitLines = !s.settings.splitLines; break;
     case GLFW_KEY_H: s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15; break;
     case GLFW_KEY_W: s.settings.tessellationTriangles = !s.settings.tessellationTriangles; break;
+    case GLFW_KEY_N: s.settings.controlNet = !s.settings.controlNet; break;
     case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
     case GLFW_KEY_F: resetCamera(s); break;

@@ -26,7 +26,7 @@ const char* shortcutHelp() {
          "7 Clough-Tocher, V its book / affine variant,\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
          "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
-         "W tessellation triangles, H radiosity surface (fig. 9.13),\n"
+         "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
          "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
@@ -144,6 +144,7 @@ void drawPanel(ViewerState& state) {
       ImGui::PushItemWidth(200);
       if (ImGui::SliderFloat("Height", &height, 0.01f, 1.0f, "%.2f")) state.settings.surfaceHeight = height;
       ImGui::PopItemWidth();
+      ImGui::Checkbox("Control net [N]", &state.settings.controlNet);
     }
   }
   if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)

@@ -52,6 +52,8 @@ class BezierPass {
   // draw(); nothing when evaluating per pixel.
   void drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation, const glm::vec4& color);
   const TessellationStatistics& statistics() const { return statistics_; }
+  const std::vector<BezierVertex>& vertices() const { return vertices_; }
+  int degree() const { return degree_; }
 
  private:
   ShaderProgram perPixel_{{"bezier.vert", "bezier.frag"}};

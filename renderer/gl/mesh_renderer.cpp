@@ -88,6 +88,8 @@ MeshRenderer::MeshRenderer() {
   floatAttribute(edgeVao_, 0, 3, 0);
   createVertexArray(splitVao_, splitVbo_, sizeof(glm::vec3));
   floatAttribute(splitVao_, 0, 3, 0);
+  createVertexArray(netVao_, netVbo_, sizeof(glm::vec3));
+  floatAttribute(netVao_, 0, 3, 0);
   createVertexArray(overlayVao_, overlayVbo_, sizeof(OverlayVertex));
   floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
   floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, color));
@@ -99,10 +101,10 @@ MeshRenderer::MeshRenderer() {
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_};
-  glDeleteVertexArrays(5, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_, splitVbo_};
-  glDeleteBuffers(6, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_, netVao_};
+  glDeleteVertexArrays(6, arrays);
+  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_, splitVbo_, netVbo_};
+  glDeleteBuffers(7, buffers);
   glDeleteQueries(2, timerQueries_.data());
 }
 
@@ -176,6 +178,14 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings) {
   patchesFor_ = wanted;
 }
 
+void MeshRenderer::uploadControlNet(double heightScale) {
+  if (netFor_[0] == patchesFor_ && netFor_[1] == heightScale) return;
+  const std::vector<glm::vec3> net = controlNetLines(bezierPass_.vertices(), bezierPass_.degree(), heightScale);
+  glNamedBufferData(netVbo_, net.size() * sizeof(glm::vec3), net.data(), GL_STATIC_DRAW);
+  netVertices_ = static_cast<GLsizei>(net.size());
+  netFor_ = {double(patchesFor_), heightScale};
+}
+
 BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, const Camera& camera) const {
   BezierEvaluation evaluation;
   evaluation.tessellation = settings.tessellation;
@@ -203,6 +213,8 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
   if (settings.method >= ShadingMethod::Quadratic) uploadPatches(settings);
+  const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic;
+  if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
   const bool timing = frame_ >= 2;
   if (timing) {
     GLuint64 ns = 0;
@@ -279,7 +291,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
     glDepthMask(GL_TRUE);
   }
   const bool bezierMethod = settings.method >= ShadingMethod::Quadratic;
-  if (bezierMethod && (settings.tessellationTriangles || settings.splitLines)) {
+  if (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet)) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
@@ -291,6 +303,13 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
       linesProgram_.use();
       glBindVertexArray(splitVao_);
       glDrawArrays(GL_LINES, 0, splitVertices_);
+    }
+    if (drawNet && netVertices_ > 0) {
+      linesProgram_.set("clipFromWorld", clipFromWorld);
+      linesProgram_.set("color", kControlNetColor);
+      linesProgram_.use();
+      glBindVertexArray(netVao_);
+      glDrawArrays(GL_LINES, 0, netVertices_);
     }
     glDepthMask(GL_TRUE);
   }

@@ -66,6 +66,7 @@ struct RenderSettings {
   // element, its tallest point (of non-emitting elements) at this fraction of the scene's
   // size; 0 is off. Drawn tessellated (adaptively when the method is set to per pixel).
   double surfaceHeight = 0.0;
+  bool controlNet = false;  // with the radiosity surface: its Bezier control net
   glm::vec3 background{0.08f, 0.08f, 0.09f};
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
@@ -117,6 +118,11 @@ class MeshRenderer {
   BezierPass bezierPass_;
   GLuint splitVao_ = 0, splitVbo_ = 0;
   GLsizei splitVertices_ = 0;
+  // The radiosity surface's control net, for the pieces and height it was built for.
+  void uploadControlNet(double heightScale);
+  GLuint netVao_ = 0, netVbo_ = 0;
+  GLsizei netVertices_ = 0;
+  std::array<double, 2> netFor_{-1, 0};  // patchesFor_, height scale
   int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};

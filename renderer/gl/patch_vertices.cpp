@@ -2,6 +2,8 @@
 
 #include "mesh/display_mesh.h"
 
+#include <cmath>
+
 namespace radview::gl {
 
 namespace {
@@ -17,6 +19,20 @@ void addPiece(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners
     v.beta = betas[k];
     out.push_back(v);
   }
+}
+
+// The same piece with its first two corners swapped, so that it turns the other way: the net
+// re-indexed b_ijk -> b_jik. Powell-Sabin's pieces alternate in orientation; the radiosity
+// surface lifts each piece along its corners' right-hand normal, so every piece must turn
+// the way its element does.
+template <size_t N>
+void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners,
+                      const std::array<Rgb, N>& b) {
+  const int n = N == 10 ? 3 : 2;
+  std::array<Rgb, N> swapped{};
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; i + j <= n; ++j) swapped[bezierIndex(n, j, i)] = b[bezierIndex(n, i, j)];
+  addPiece(out, {corners[1], corners[0], corners[2]}, swapped);
 }
 
 }  // namespace
@@ -83,8 +99,47 @@ std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch
       const Vec3 &a = p.frame.V[k], &b = p.frame.V[(k + 1) % 3];
       const Vec3 R = (1.0 - p.t[k]) * a + p.t[k] * b;
       addPiece(out, {a, R, p.Z}, p.control[2 * k]);      // piece 2k: (V_k, R_k, Z)
-      addPiece(out, {b, R, p.Z}, p.control[2 * k + 1]);  // piece 2k+1: (V_k+1, R_k, Z)
+      addPieceReversed(out, {b, R, p.Z}, p.control[2 * k + 1]);  // piece 2k+1: (V_k+1, R_k, Z)
     }
+  return out;
+}
+
+std::vector<glm::vec3> controlNetLines(const std::vector<BezierVertex>& vertices, int degree, double heightScale) {
+  std::vector<glm::vec3> out;
+  const int n = degree;
+  const int count = (n + 1) * (n + 2) / 2;
+  const glm::vec3 luminanceWeights(0.2126f, 0.7152f, 0.0722f);
+  auto indexOf = [n](int i, int j) { return bezierIndex(n, i, j); };
+  std::vector<glm::vec3> lifted(count);
+  for (size_t first = 0; first + 2 < vertices.size(); first += 3) {
+    const glm::vec3 V0 = vertices[first].position, V1 = vertices[first + 1].position, V2 = vertices[first + 2].position;
+    const glm::vec3 normal = glm::normalize(glm::cross(V1 - V0, V2 - V0));
+    if (!std::isfinite(normal.x)) continue;  // a degenerate piece has no surface to draw
+    const BezierVertex& piece = vertices[first];
+    for (int i = n; i >= 0; --i)
+      for (int j = n - i; j >= 0; --j) {
+        const int k = n - i - j, index = indexOf(i, j);
+        const int f = 3 * index;
+        const glm::vec3 b(piece.control[f / 4][f % 4], piece.control[(f + 1) / 4][(f + 1) % 4],
+                          piece.control[(f + 2) / 4][(f + 2) % 4]);
+        const glm::vec3 domain = (float(i) * V0 + float(j) * V1 + float(k) * V2) / float(n);
+        lifted[index] = domain + normal * float(heightScale * glm::dot(b, luminanceWeights));
+      }
+    for (int i = n; i >= 0; --i)
+      for (int j = n - i; j >= 0; --j) {
+        const glm::vec3 p = lifted[indexOf(i, j)];
+        if (i > 0) {
+          for (const glm::vec3& q : {lifted[indexOf(i - 1, j + 1)], lifted[indexOf(i - 1, j)]}) {
+            out.push_back(p);
+            out.push_back(q);
+          }
+        }
+        if (j > 0) {
+          out.push_back(p);
+          out.push_back(lifted[indexOf(i, j - 1)]);
+        }
+      }
+  }
   return out;
 }
 

@@ -35,4 +35,11 @@ std::vector<glm::vec3> cloughTocherSplitLines(const std::vector<CloughTocherPatc
 std::vector<glm::vec3> powellSabinSplitLines(const std::vector<PowellSabinPatch>& patches);
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches);
 
+// The control net of the radiosity surface (fig. 9.13), two points per segment. The surface
+// lifts each point of a piece off its plane by heightScale * luminance(B); since that height is
+// a linear function of B, its Bezier control points are the domain points (i V_0 + j V_1 +
+// k V_2) / n lifted by heightScale * luminance(b_ijk), exactly. Each control point is joined
+// to its neighbours b_(i-1)(j+1)k, b_(i-1)j(k+1) and b_i(j-1)(k+1), as the book draws the net.
+std::vector<glm::vec3> controlNetLines(const std::vector<BezierVertex>& vertices, int degree, double heightScale);
+
 }  // namespace radview::gl

@@ -30,6 +30,7 @@ inline constexpr glm::vec4 kDiscontinuityC0Color{1.0f, 0.85f, 0.1f, 1.0f};   // 
 inline constexpr glm::vec4 kTVertexColor{1.0f, 0.1f, 1.0f, 1.0f};
 inline constexpr glm::vec4 kSplitLineColor{0.1f, 0.9f, 0.9f, 1.0f};     // Bezier piece boundaries
 inline constexpr glm::vec4 kTessellationColor{0.2f, 0.35f, 1.0f, 1.0f};  // generated triangles
+inline constexpr glm::vec4 kControlNetColor{1.0f, 0.55f, 0.1f, 1.0f};   // the surface's Bezier control net
 
 struct DisplayMesh {
   std::vector<DisplayVertex> triangles;  // three vertices per triangle
