@@ -2,10 +2,12 @@
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/image_difference.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "interp/tessellation_level.h"
 
+#include <cmath>
 #include <cstdio>
 #include <regex>
 
@@ -43,6 +45,14 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))
     throw Error("--tolerance " + std::to_string(display.tolerance) + ": expected 0.01 .. 100 8-bit steps");
   settings.tessellationTolerance = display.tolerance / 255.0;
+  settings.comparisonMethod = gl::shadingMethodFromName(display.compareWith);
+  settings.comparison = display.reference.empty() ? gl::RenderSettings::Comparison::Method
+                                                  : gl::RenderSettings::Comparison::Image;
+  if (!display.reference.empty() && settings.view != gl::DisplayView::Difference)
+    throw Error("--reference needs --view difference");
+  if (!(display.differenceScale >= 0.01 && display.differenceScale <= 255.0))
+    throw Error("--difference-scale " + std::to_string(display.differenceScale) + ": expected 0.01 .. 255 8-bit steps");
+  settings.differenceScale = display.differenceScale / 255.0;
   return settings;
 }
 
@@ -62,16 +72,36 @@ int parseTessellation(const std::string& text) {
 }
 
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
-                    const std::string& out) {
+                    const std::string& out, const std::string& linearOut) {
   const gl::RenderSettings settings = settingsFrom(display);
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
+  ReferenceImage reference;
+  if (!display.reference.empty()) {
+    reference = readReferenceImage(display.reference);
+    if (reference.pixels.width != width || reference.pixels.height != height)
+      throw Error(display.reference, "the image is " + std::to_string(reference.pixels.width) + "x" +
+                                         std::to_string(reference.pixels.height) + ": render it with --size " +
+                                         std::to_string(reference.pixels.width) + "x" +
+                                         std::to_string(reference.pixels.height));
+  }
 
   gl::EglContext context;
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
+  if (!display.reference.empty()) renderer.setReferenceImage(reference);
   renderer.render(camera, settings, width, height);
   writePng(renderer.readDisplay(), out);
+  if (!linearOut.empty()) writeLinearImage(renderer.readLinear(), linearOut);
   std::printf("%s\n", out.c_str());
+  if (settings.view == gl::DisplayView::Difference) {
+    const std::string against = display.reference.empty() ? display.compareWith : display.reference;
+    const DisplayDifference d = displayDifference(renderer.readLinear(), renderer.readComparison(),
+                                                  std::exp2(settings.exposure));
+    std::printf("difference %s - %s: %zu pixels, RMSE %.4g, max %.4g, mean %.4g 8-bit steps of displayed "
+                "luminance; colour bar -%.4g (blue) .. +%.4g (red)\n",
+                display.method.c_str(), against.c_str(), d.pixels, d.rmse * 255.0, d.maxAbs * 255.0,
+                d.meanSigned * 255.0, display.differenceScale, display.differenceScale);
+  }
 }
 
 int runRender(const RenderOptions& options) {
@@ -79,7 +109,7 @@ int runRender(const RenderOptions& options) {
   parseSize(options.size, width, height);
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
-  renderHeadless(viewed, options.display, width, height, options.out);
+  renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
   return 0;
 }
 

@@ -13,7 +13,10 @@ struct DisplayOptions {
   double exposure = 0.0;     // stops
   std::string camera;        // preset or eye/target/up; empty: the file's camera, else front
   bool edges = false;
-  std::string view = "normal";  // normal, value, gradient, isolines
+  std::string view = "normal";  // normal, value, gradient, isolines, difference
+  std::string compareWith = "clough-tocher";  // difference view: the other method
+  std::string reference;        // difference view: an image to compare with instead
+  double differenceScale = 4.0;  // difference view: 8-bit steps at the ends of the colour bar
   bool discontinuities = false;  // overlay discontinuity edges, coloured by order
   bool tVertices = false;        // overlay T-vertex markers
   bool repairTVertices = false;  // triangulate elements through their T-vertices before drawing
@@ -31,6 +34,7 @@ struct RenderOptions {
   std::string file;
   std::string out = "radview.png";
   std::string size = "1024x768";
+  std::string linearOut;  // also write the linear radiosity (e.g. .exr), usable as a reference
   DisplayOptions display;
 };
 
@@ -73,8 +77,9 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display);
 // --tessellation as gl::RenderSettings::tessellation. Throws Error.
 int parseTessellation(const std::string& text);
 // Renders through EGL to a PNG at `out` and prints its path.
+// A difference view's statistics are printed after the path.
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
-                    const std::string& out);
+                    const std::string& out, const std::string& linearOut = "");
 
 // "1024x768" -> width, height. Throws Error.
 void parseSize(const std::string& text, int& width, int& height);

@@ -36,8 +36,21 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
   command.add_flag("--edges", d.edges, "Overlay element edges");
   command.add_option("--view", d.view,
                      "normal; or false colour: value (with a colour bar), gradient (its magnitude per pixel: "
-                     "Mach bands are jumps in it), isolines")
+                     "Mach bands are jumps in it), isolines, difference (against --compare-with or --reference)")
       ->check(CLI::IsMember(gl::displayViewNames()))
+      ->capture_default_str();
+  command.add_option("--compare-with", d.compareWith,
+                     "--view difference: the method to subtract, evaluated exactly per pixel (a tessellated "
+                     "method against itself shows its tessellation error)")
+      ->check(CLI::IsMember(gl::shadingMethodNames()))
+      ->capture_default_str();
+  command.add_option("--reference", d.reference,
+                     "--view difference: an image to subtract instead, the size of the render: a float file "
+                     "(.exr, from render --linear-out) is linear radiosity, shown through the same exposure; "
+                     "an 8-bit one (.png) is display colour");
+  command.add_option("--difference-scale", d.differenceScale,
+                     "--view difference: the difference, in 8-bit steps of displayed luminance, at the ends of "
+                     "the colour bar")
       ->capture_default_str();
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
@@ -96,6 +109,8 @@ int main(int argc, char** argv) {
       ->required();
   renderCommand->add_option("--out,-o", render.out, "Output PNG")->capture_default_str();
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  renderCommand->add_option("--linear-out", render.linearOut,
+                            "Also write the linear radiosity as a float image (.exr): a reference for --reference");
   addDisplayOptions(*renderCommand, render.display);
 
   InfoOptions info;

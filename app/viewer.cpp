@@ -1,6 +1,7 @@
 #include "app/commands.h"
 #include "app/viewer_panel.h"
 #include "core/error.h"
+#include "core/image_difference.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -10,10 +11,12 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <sstream>
 
 namespace radview {
 
@@ -175,6 +178,8 @@ int runViewer(const ViewerOptions& options) {
   state.settings = settingsFrom(options.display);
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
+  if (!options.display.reference.empty()) renderer.setReferenceImage(readReferenceImage(options.display.reference));
+  state.referencePath = options.display.reference;
   adoptViewedFile(state, std::move(viewed));
   if (!options.display.camera.empty())
     state.camera = state.homeCamera =
@@ -192,6 +197,14 @@ int runViewer(const ViewerOptions& options) {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
   ImGui::StyleColorsDark();
+  // High-DPI displays: the panel at the monitor's content scale (1 on a plain X server, 2 on a
+  // typical HiDPI one); the scene is rendered at the framebuffer's own resolution below.
+  float xScale = 1.0f, yScale = 1.0f;
+  glfwGetWindowContentScale(window, &xScale, &yScale);
+  if (xScale > 1.0f) {
+    ImGui::GetStyle().ScaleAllSizes(xScale);
+    ImGui::GetIO().FontGlobalScale = xScale;
+  }
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
   session.imgui = true;
@@ -215,6 +228,15 @@ int runViewer(const ViewerOptions& options) {
         state.status = e.what();
       }
     }
+    if (state.referenceRequested) {
+      state.referenceRequested = false;
+      try {
+        renderer.setReferenceImage(readReferenceImage(state.referencePath));
+        state.status = "reference image " + state.referencePath;
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
     if (fbWidth > 0 && fbHeight > 0) {
@@ -228,6 +250,17 @@ int runViewer(const ViewerOptions& options) {
       state.gpuFrameMs = renderer.gpuFrameMs();
       state.tessellation = renderer.tessellationStatistics();
       state.triangles = renderer.triangleCount();
+      // The difference's numbers, twice a second or so: reading both images back costs a few ms.
+      if (state.settings.view == gl::DisplayView::Difference && frame % 30 == 1) {
+        try {
+          std::ostringstream text;
+          text << displayDifference(renderer.readLinear(), renderer.readComparison(),
+                                    std::exp2(state.settings.exposure));
+          state.difference = text.str();
+        } catch (const std::exception& e) {
+          state.difference = e.what();
+        }
+      }
     }
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();

@@ -6,7 +6,9 @@
 
 #include <string>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 namespace radview {
@@ -43,7 +45,59 @@ void section(const char* title) {
 
 }  // namespace
 
+// What the difference view subtracts, its scale, and what it measured.
+void drawDifferenceControls(ViewerState& state) {
+  gl::RenderSettings& s = state.settings;
+  int against = static_cast<int>(s.comparison);
+  ImGui::RadioButton("minus a method", &against, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("minus an image", &against, 1);
+  s.comparison = static_cast<gl::RenderSettings::Comparison>(against);
+  if (s.comparison == gl::RenderSettings::Comparison::Method) {
+    int other = static_cast<int>(s.comparisonMethod);
+    ImGui::Combo("Method, per pixel", &other,
+                 "Flat\0Gouraud\0Scanline Gouraud\0Bilinear\0Quadratic\0C1 quadratic\0Clough-Tocher\0");
+    s.comparisonMethod = static_cast<gl::ShadingMethod>(other);
+  } else {
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", state.referencePath.c_str());
+    if (ImGui::InputText("##reference", buffer, sizeof buffer)) state.referencePath = buffer;
+    ImGui::SameLine();
+    if (ImGui::Button("Load")) state.referenceRequested = true;
+    ImGui::TextDisabled(".exr from render --linear-out: linear; .png: display");
+  }
+  float steps = float(s.differenceScale * 255.0);
+  if (ImGui::SliderFloat("Bar ends, 8-bit steps", &steps, 0.25f, 64.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+    s.differenceScale = steps / 255.0;
+  if (!state.difference.empty()) ImGui::TextWrapped("%s", state.difference.c_str());
+}
+
+// Labels beside the colour bar the false-colour views draw at the window's right edge.
+void drawColourBarLabels(const ViewerState& state) {
+  const gl::DisplayView view = state.settings.view;
+  if (view != gl::DisplayView::Value && view != gl::DisplayView::Difference) return;
+  const ImVec2 size = ImGui::GetIO().DisplaySize;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const double top = view == gl::DisplayView::Value ? 1.0 : state.settings.differenceScale * 255.0;
+  const double bottom = view == gl::DisplayView::Value ? 0.0 : -top;
+  for (int i = 0; i <= 4; ++i) {
+    const double t = i / 4.0;
+    char label[32];
+    std::snprintf(label, sizeof label, "%+.3g", bottom + (top - bottom) * t);
+    const float y = size.y * float(1.0 - t);
+    const ImVec2 extent = ImGui::CalcTextSize(label);
+    const float yText = std::clamp(y - extent.y * 0.5f, 0.0f, size.y - extent.y);
+    draw->AddRectFilled(ImVec2(size.x - 20 - extent.x - 4, yText), ImVec2(size.x - 18, yText + extent.y),
+                        IM_COL32(0, 0, 0, 160));
+    draw->AddText(ImVec2(size.x - 20 - extent.x - 2, yText), IM_COL32(255, 255, 255, 255), label);
+  }
+  const char* unit = view == gl::DisplayView::Value ? "displayed luminance" : "8-bit steps";
+  const ImVec2 extent = ImGui::CalcTextSize(unit);
+  draw->AddText(ImVec2(size.x - 20 - extent.x - 2, size.y * 0.5f - extent.y * 2.0f), IM_COL32(255, 255, 255, 200), unit);
+}
+
 void drawPanel(ViewerState& state) {
+  drawColourBarLabels(state);
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("radview");
@@ -111,7 +165,7 @@ void drawPanel(ViewerState& state) {
   ImGui::PopItemWidth();
   int view = static_cast<int>(state.settings.view);
   ImGui::PushItemWidth(200);
-  ImGui::Combo("View [C]", &view, "Normal\0Value, false colour\0Gradient magnitude\0Isolines\0");
+  ImGui::Combo("View [C]", &view, "Normal\0Value, false colour\0Gradient magnitude\0Isolines\0Difference\0");
   state.settings.view = static_cast<gl::DisplayView>(view);
   if (state.settings.view == gl::DisplayView::GradientMagnitude) {
     float scale = float(state.settings.gradientScale);
@@ -119,6 +173,7 @@ void drawPanel(ViewerState& state) {
       state.settings.gradientScale = scale;
   }
   if (state.settings.view == gl::DisplayView::Isolines) ImGui::SliderInt("Levels", &state.settings.isolineCount, 2, 64);
+  if (state.settings.view == gl::DisplayView::Difference) drawDifferenceControls(state);
   ImGui::PopItemWidth();
   if (state.settings.view == gl::DisplayView::Value)
     ImGui::TextDisabled("colour bar (right edge): displayed luminance 0 .. 1");

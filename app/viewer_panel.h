@@ -22,6 +22,9 @@ struct ViewerState {
   double gpuFrameMs = 0.0;
   size_t triangles = 0;
   gl::TessellationStatistics tessellation;  // of the last quadratic or C1 frame
+  std::string referencePath;        // panel's reference image field (difference view)
+  bool referenceRequested = false;  // load referencePath as the reference image
+  std::string difference;           // the difference view's statistics, when the sizes allow
 };
 
 void rotateView45(ViewerState& state);

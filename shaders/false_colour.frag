@@ -7,6 +7,7 @@
 const int VIEW_VALUE = 1;
 const int VIEW_GRADIENT = 2;
 const int VIEW_ISOLINES = 3;
+const int VIEW_DIFFERENCE = 4;
 
 uniform sampler2D linearRadiosity;
 uniform float exposureScale;
@@ -14,6 +15,12 @@ uniform vec3 background;
 uniform int view;
 uniform float gradientScale;  // gradient view: display value per pixel that maps to the top of the scale
 uniform int isolineCount;     // isolines: levels across the display range [0, 1]
+// Difference: the comparison, linear radiosity (another method, or a float reference image) or
+// display colour (an 8-bit reference image), sampled at this view's relative position; the
+// difference in displayed luminance at the ends of the diverging scale.
+uniform sampler2D comparisonRadiosity;
+uniform bool comparisonLinear;
+uniform float differenceScale;
 
 layout(location = 0) out vec4 display;
 
@@ -28,28 +35,49 @@ vec3 colourScale(float t) {
 
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
+// Blue (negative: the render is darker than the comparison), white at zero, red (positive).
+vec3 divergingScale(float t) {
+  float x = clamp(t, -1.0, 1.0);
+  return x < 0.0 ? mix(vec3(1.0), vec3(0.1, 0.25, 0.85), -x) : mix(vec3(1.0), vec3(0.85, 0.1, 0.1), x);
+}
+
+bool finiteAndCovered(vec4 B) { return B.a > 0.0 && !any(isnan(B.rgb)) && !any(isinf(B.rgb)); }
+
 // The displayed (exposed, tone-mapped) luminance of a pixel, and whether a surface is there.
 float shown(ivec2 p, out bool covered) {
   vec4 B = texelFetch(linearRadiosity, clamp(p, ivec2(0), textureSize(linearRadiosity, 0) - 1), 0);
-  covered = B.a > 0.0 && !any(isnan(B.rgb)) && !any(isinf(B.rgb));
+  covered = finiteAndCovered(B);
   return covered ? luminance(toneMap(B.rgb, exposureScale)) : 0.0;
 }
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   ivec2 size = textureSize(linearRadiosity, 0);
-  if (view == VIEW_VALUE && p.x >= size.x - 16) {  // the colour bar: bottom 0, top 1
-    display = vec4(p.x < size.x - 12 ? background : colourScale(gl_FragCoord.y / float(size.y)), 1.0);
+  if ((view == VIEW_VALUE || view == VIEW_DIFFERENCE) && p.x >= size.x - 16) {  // the colour bar
+    float t = gl_FragCoord.y / float(size.y);  // value: bottom 0, top 1; difference: -scale .. +scale
+    vec3 bar = view == VIEW_VALUE ? colourScale(t) : divergingScale(2.0 * t - 1.0);
+    display = vec4(p.x < size.x - 12 ? background : bar, 1.0);
     return;
   }
   vec4 B = texelFetch(linearRadiosity, p, 0);
-  bool covered = B.a > 0.0 && !any(isnan(B.rgb)) && !any(isinf(B.rgb));
+  bool covered = finiteAndCovered(B);
   if (!covered) {
     display = vec4(background, 1.0);
     return;
   }
   vec3 shownColour = toneMap(B.rgb, exposureScale);
   float v = luminance(shownColour);
+  if (view == VIEW_DIFFERENCE) {
+    ivec2 q = ivec2(gl_FragCoord.xy * vec2(textureSize(comparisonRadiosity, 0)) / vec2(size));
+    vec4 C = texelFetch(comparisonRadiosity, q, 0);
+    if (!finiteAndCovered(C)) {
+      display = vec4(background, 1.0);
+      return;
+    }
+    float shownC = luminance(comparisonLinear ? toneMap(C.rgb, exposureScale) : C.rgb);
+    display = vec4(divergingScale((v - shownC) / differenceScale), 1.0);
+    return;
+  }
   if (view == VIEW_VALUE) {
     display = vec4(colourScale(v), 1.0);
   } else if (view == VIEW_GRADIENT) {

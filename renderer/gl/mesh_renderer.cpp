@@ -27,7 +27,7 @@ ShadingMethod shadingMethodFromName(const std::string& name) {
 }
 
 const std::vector<std::string>& displayViewNames() {
-  static const std::vector<std::string> names = {"normal", "value", "gradient", "isolines"};
+  static const std::vector<std::string> names = {"normal", "value", "gradient", "isolines", "difference"};
   return names;
 }
 
@@ -106,6 +106,7 @@ MeshRenderer::~MeshRenderer() {
   GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_, splitVbo_, netVbo_};
   glDeleteBuffers(7, buffers);
   glDeleteQueries(2, timerQueries_.data());
+  if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
 }
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
@@ -148,33 +149,47 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
       for (uint32_t n : e.corners)
         brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
   if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
-  patchesFor_ = -1;
+  patchesFor_ = comparisonPatchesFor_ = -1;
   repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
 }
 
+namespace {
+
+// The Bezier pieces of a quadratic or C1 method on `mesh`, and the lines that split elements
+// into them (none for quadratic elements).
+void buildPieces(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
+                 std::vector<BezierVertex>& vertices, std::vector<glm::vec3>& split) {
+  if (method == ShadingMethod::Quadratic) {
+    vertices = quadraticLagrangeVertices(mesh);
+    return;
+  }
+  const SurfaceTriangulation surface(mesh);
+  const CornerGradients gradients = vertexGradients(surface, true);
+  if (method == ShadingMethod::CloughTocher) {
+    const auto patches = buildCloughTocherPatches(surface, gradients, variant);
+    vertices = cloughTocherVertices(patches);
+    split = cloughTocherSplitLines(patches);
+  } else {
+    const auto patches = buildPowellSabinPatches(surface, gradients);
+    vertices = powellSabinVertices(patches);
+    split = powellSabinSplitLines(patches);
+  }
+}
+
+int piecesKey(ShadingMethod method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
+int degreeOf(ShadingMethod method) { return method == ShadingMethod::CloughTocher ? 3 : 2; }
+
+}  // namespace
+
 void MeshRenderer::uploadPatches(const RenderSettings& settings) {
-  const int wanted = int(settings.method) * 2 + int(settings.cloughTocher);
+  const int wanted = piecesKey(settings.method, settings.cloughTocher);
   if (wanted == patchesFor_) return;
   std::vector<BezierVertex> vertices;
   std::vector<glm::vec3> split;
-  if (settings.method == ShadingMethod::Quadratic) {
-    vertices = quadraticLagrangeVertices(mesh_);
-  } else {
-    const SurfaceTriangulation surface(mesh_);
-    const CornerGradients gradients = vertexGradients(surface, true);
-    if (settings.method == ShadingMethod::CloughTocher) {
-      const auto patches = buildCloughTocherPatches(surface, gradients, settings.cloughTocher);
-      vertices = cloughTocherVertices(patches);
-      split = cloughTocherSplitLines(patches);
-    } else {
-      const auto patches = buildPowellSabinPatches(surface, gradients);
-      vertices = powellSabinVertices(patches);
-      split = powellSabinSplitLines(patches);
-    }
-  }
+  buildPieces(mesh_, settings.method, settings.cloughTocher, vertices, split);
   glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
   splitVertices_ = static_cast<GLsizei>(split.size());
-  bezierPass_.upload(std::move(vertices), settings.method == ShadingMethod::CloughTocher ? 3 : 2);
+  bezierPass_.upload(std::move(vertices), degreeOf(settings.method));
   patchesFor_ = wanted;
 }
 
@@ -199,7 +214,51 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
   return evaluation;
 }
 
-void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settings, int width, int height) {
+void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
+                                 const glm::mat4& clipFromWorld, int width, int height) {
+  GLint framebuffer = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  const float clearLinear[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(GLuint(framebuffer), GL_COLOR, 0, clearLinear);
+  glClearNamedFramebufferfi(GLuint(framebuffer), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // radiosity surfaces are seen from both sides in a viewer
+  // Push surfaces back a little so edge overlays drawn at the same depth win.
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  if (method == ShadingMethod::Flat || method == ShadingMethod::Gouraud) {
+    meshProgram_.set("clipFromWorld", clipFromWorld);
+    meshProgram_.set("method", static_cast<int>(method));
+    meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
+    meshProgram_.use();
+    glBindVertexArray(meshVao_);
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  } else if (method == ShadingMethod::ScanlineGouraud || method == ShadingMethod::Bilinear) {
+    polygonProgram_.set("clipFromWorld", clipFromWorld);
+    polygonProgram_.set("viewportSize", glm::vec2(width, height));
+    polygonProgram_.set("mode", method == ShadingMethod::ScanlineGouraud ? 0 : 1);
+    polygonProgram_.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
+    glBindVertexArray(meshVao_);
+    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+  } else {
+    (method == settings.method ? bezierPass_ : comparisonPass_).draw(clipFromWorld, bezierEvaluation(settings, camera));
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& requested, int width, int height) {
+  RenderSettings settings = requested;
+  // A difference compares the same surfaces: the raised radiosity surface has no counterpart.
+  if (settings.view == DisplayView::Difference) settings.surfaceHeight = 0.0;
+  const bool compareMethod =
+      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Method;
+  const bool compareImage =
+      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Image;
+  if (compareImage && !hasReferenceImage())
+    throw Error("difference view: no reference image to compare with (give one with --reference)");
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
   if (settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic) {
@@ -213,6 +272,15 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
   if (settings.method >= ShadingMethod::Quadratic) uploadPatches(settings);
+  const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
+  if (compareMethod && settings.comparisonMethod >= ShadingMethod::Quadratic &&
+      comparisonKey != comparisonPatchesFor_ && settings.comparisonMethod != settings.method) {
+    std::vector<BezierVertex> vertices;
+    std::vector<glm::vec3> split;
+    buildPieces(mesh_, settings.comparisonMethod, settings.cloughTocher, vertices, split);
+    comparisonPass_.upload(std::move(vertices), degreeOf(settings.comparisonMethod));
+    comparisonPatchesFor_ = comparisonKey;
+  }
   const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic;
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
   const bool timing = frame_ >= 2;
@@ -228,38 +296,17 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
   glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
   const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height));
 
-  // Pass 1: linear radiosity and depth.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
+  // Pass 1: linear radiosity and depth; for a difference view against another method, that
+  // method first, into the comparison target.
   glViewport(0, 0, width, height);
-  const float clearLinear[] = {0.0f, 0.0f, 0.0f, 0.0f};
-  glClearNamedFramebufferfv(targets_.linearFramebuffer(), GL_COLOR, 0, clearLinear);
-  glClearNamedFramebufferfi(targets_.linearFramebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glDisable(GL_CULL_FACE);  // radiosity surfaces are seen from both sides in a viewer
-  // Push surfaces back a little so edge overlays drawn at the same depth win.
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1.0f, 1.0f);
-  if (settings.method == ShadingMethod::Flat || settings.method == ShadingMethod::Gouraud) {
-    meshProgram_.set("clipFromWorld", clipFromWorld);
-    meshProgram_.set("method", static_cast<int>(settings.method));
-    meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
-    meshProgram_.use();
-    glBindVertexArray(meshVao_);
-    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
-  } else if (settings.method == ShadingMethod::ScanlineGouraud || settings.method == ShadingMethod::Bilinear) {
-    polygonProgram_.set("clipFromWorld", clipFromWorld);
-    polygonProgram_.set("viewportSize", glm::vec2(width, height));
-    polygonProgram_.set("mode", settings.method == ShadingMethod::ScanlineGouraud ? 0 : 1);
-    polygonProgram_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
-    glBindVertexArray(meshVao_);
-    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
-  } else {
-    bezierPass_.draw(clipFromWorld, bezierEvaluation(settings, camera));
+  if (compareMethod) {
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
+    RenderSettings comparison = settings;
+    comparison.tessellation = 0;
+    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height);
   }
-  glDisable(GL_POLYGON_OFFSET_FILL);
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
+  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height);
 
   // Pass 2: tone map into the display target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
@@ -272,6 +319,13 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& settin
     display.set("view", static_cast<int>(settings.view));
     display.set("gradientScale", float(settings.gradientScale));
     display.set("isolineCount", settings.isolineCount);
+  }
+  if (settings.view == DisplayView::Difference) {
+    display.set("comparisonRadiosity", 1);
+    display.set("comparisonLinear", compareMethod || reference_.linear ? 1 : 0);
+    display.set("differenceScale", float(settings.differenceScale));
+    glBindTextureUnit(1, compareMethod ? targets_.comparisonTexture() : referenceTexture_);
+    comparedWithImage_ = compareImage;
   }
   display.use();
   glBindTextureUnit(0, targets_.linearTexture());
@@ -344,6 +398,40 @@ Image MeshRenderer::readDisplay() const {
   return {targets_.width(), targets_.height(),
           readPixels<uint8_t>(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(),
                               targets_.height(), GL_UNSIGNED_BYTE)};
+}
+
+void MeshRenderer::setReferenceImage(const ReferenceImage& reference) {
+  if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
+  referenceTexture_ = 0;
+  const LinearImage& image = reference.pixels;
+  // OpenGL's rows run bottom-up.
+  std::vector<float> rows(image.rgba.size());
+  const size_t row = size_t(image.width) * 4;
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &rows[size_t(y) * row]);
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
+    throw Error(reference.path, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                                    ", outside this OpenGL's 1.." + std::to_string(maxSize));
+  glCreateTextures(GL_TEXTURE_2D, 1, &referenceTexture_);
+  glTextureStorage2D(referenceTexture_, 1, GL_RGBA32F, image.width, image.height);
+  glTextureParameteri(referenceTexture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(referenceTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureSubImage2D(referenceTexture_, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rows.data());
+  reference_ = reference;
+}
+
+ReferenceImage MeshRenderer::readComparison() const {
+  if (comparedWithImage_) return reference_;
+  if (!targets_.comparisonFramebuffer()) throw Error("no difference view has been rendered");
+  ReferenceImage comparison;
+  comparison.linear = true;
+  comparison.path = "the comparison method";
+  comparison.pixels = {targets_.width(), targets_.height(),
+                       readPixels<float>(targets_.comparisonFramebuffer(),
+                                         GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(), GL_FLOAT)};
+  return comparison;
 }
 
 LinearImage MeshRenderer::readLinear() const {

@@ -40,8 +40,10 @@ enum class DisplayView : int {
   Value,              // the displayed luminance on a colour scale, with a colour bar
   GradientMagnitude,  // of the displayed luminance per pixel: Mach bands are jumps in it
   Isolines,           // the normal display with lines between luminance levels
+  Difference,         // displayed luminance minus a comparison's: another method, or an image
 };
-const std::vector<std::string>& displayViewNames();  // "normal", "value", "gradient", "isolines"
+// "normal", "value", "gradient", "isolines", "difference"
+const std::vector<std::string>& displayViewNames();
 DisplayView displayViewFromName(const std::string& name);  // throws Error
 
 struct RenderSettings {
@@ -56,6 +58,14 @@ struct RenderSettings {
   DisplayView view = DisplayView::Normal;
   double gradientScale = 0.02;  // gradient view: display units per pixel at the top of the scale
   int isolineCount = 16;        // isolines view: levels across the display range
+  // Difference view: what the render is compared with, the other method (evaluated exactly per
+  // pixel, so a tessellated method against itself shows its tessellation error) or the
+  // reference image (setReferenceImage); and the difference at the ends of the colour scale,
+  // in display units.
+  enum class Comparison : int { Method, Image };
+  Comparison comparison = Comparison::Method;
+  ShadingMethod comparisonMethod = ShadingMethod::CloughTocher;
+  double differenceScale = 4.0 / 255.0;
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
   bool tVertices = false;           // markers
@@ -81,8 +91,16 @@ class MeshRenderer {
   void setMesh(const RadiosityMesh& mesh);
   void render(const Camera& camera, const RenderSettings& settings, int width, int height);
 
+  // The image a difference view compares with: a linear file or display colour, any size (the
+  // view samples it at its own resolution; displayDifference needs equal sizes).
+  void setReferenceImage(const ReferenceImage& reference);
+  bool hasReferenceImage() const { return referenceTexture_ != 0; }
+
   Image readDisplay() const;
   LinearImage readLinear() const;
+  // What the last difference view compared with, as a reference for displayDifference: the
+  // comparison method's linear image, or the reference image.
+  ReferenceImage readComparison() const;
   // Copies the last rendered image into the window's back buffer.
   void presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const;
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
@@ -108,6 +126,16 @@ class MeshRenderer {
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
   // the method or the Clough-Tocher variant changes).
   void uploadPatches(const RenderSettings& settings);
+  // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth.
+  void drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
+                     const glm::mat4& clipFromWorld, int width, int height);
+  // The comparison method's pieces, when it is a Bezier method (its own pass: switching
+  // between the two every frame would rebuild them every frame).
+  BezierPass comparisonPass_;
+  int comparisonPatchesFor_ = -1;
+  GLuint referenceTexture_ = 0;
+  ReferenceImage reference_;  // as set, for readComparison
+  bool comparedWithImage_ = false;  // what the last difference view used
   void uploadMesh(bool repairTVertices);
   RadiosityMesh original_;      // as set
   RadiosityMesh mesh_;          // as drawn: the original, or with its T-vertices repaired

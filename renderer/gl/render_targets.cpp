@@ -31,9 +31,10 @@ RenderTargets::~RenderTargets() { release(); }
 void RenderTargets::release() {
   glDeleteFramebuffers(1, &linearFbo_);
   glDeleteFramebuffers(1, &displayFbo_);
-  GLuint textures[] = {linearColor_, displayColor_, depth_};
-  glDeleteTextures(3, textures);
-  linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = 0;
+  glDeleteFramebuffers(1, &comparisonFbo_);
+  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_};
+  glDeleteTextures(4, textures);
+  linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = comparisonFbo_ = comparisonColor_ = 0;
   width_ = height_ = 0;
 }
 
@@ -63,6 +64,16 @@ void RenderTargets::resize(int width, int height) {
   }
   width_ = width;
   height_ = height;
+}
+
+GLuint RenderTargets::ensureComparison() {
+  if (comparisonFbo_) return comparisonFbo_;
+  comparisonColor_ = texture(GL_RGBA32F, width_, height_);
+  glCreateFramebuffers(1, &comparisonFbo_);
+  glNamedFramebufferTexture(comparisonFbo_, GL_COLOR_ATTACHMENT0, comparisonColor_, 0);
+  glNamedFramebufferTexture(comparisonFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+  requireComplete(comparisonFbo_, "comparison");
+  return comparisonFbo_;
 }
 
 }  // namespace radview::gl

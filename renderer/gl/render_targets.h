@@ -3,6 +3,8 @@
 // covered pixels) and depth; `display` holds the tone-mapped image (RGBA8) and shares that
 // depth so overlays drawn after tone mapping are hidden by surfaces in front of them.
 // A window presents `display`; a headless render reads it back. Both see the same pixels.
+// `comparison`, made on first use, is a second linear target of the same size: the method a
+// difference view compares with is drawn there first.
 #include <epoxy/gl.h>
 
 namespace radview::gl {
@@ -21,12 +23,18 @@ class RenderTargets {
   GLuint linearFramebuffer() const { return linearFbo_; }
   GLuint displayFramebuffer() const { return displayFbo_; }
   GLuint linearTexture() const { return linearColor_; }
+  // The comparison target, sharing the depth buffer (each pass clears it), made on the first
+  // call. Throws Error as resize.
+  GLuint ensureComparison();
+  GLuint comparisonFramebuffer() const { return comparisonFbo_; }  // 0 until ensureComparison
+  GLuint comparisonTexture() const { return comparisonColor_; }
 
  private:
   void release();
   int width_ = 0, height_ = 0;
   GLuint linearFbo_ = 0, displayFbo_ = 0;
   GLuint linearColor_ = 0, displayColor_ = 0, depth_ = 0;
+  GLuint comparisonFbo_ = 0, comparisonColor_ = 0;
 };
 
 }  // namespace radview::gl

@@ -1,5 +1,6 @@
 #include "mesh/solution_file.h"
 
+#include "core/display_transform.h"
 #include "core/error.h"
 #include "core/strings.h"
 #include "geom/polygon.h"
@@ -26,7 +27,6 @@ constexpr uint32_t kNoVertex = UINT32_MAX;
 const char* const kGradientAttributes[3] = {"_RADIOSITY_GRADIENT_R", "_RADIOSITY_GRADIENT_G",
                                             "_RADIOSITY_GRADIENT_B"};
 
-double luminance(const Rgb& B) { return 0.2126 * B.r + 0.7152 * B.g + 0.0722 * B.b; }  // Rec. 709
 
 
 tinygltf::Value numbers(const Rgb& v) {
