@@ -1,12 +1,15 @@
 #version 450 core
 #include "lib/scanline_gouraud.glsl"
-// Scanline Gouraud (fig. 9.7) and bilinear quads per pixel, from the element's polygon.
+// Scanline Gouraud (fig. 9.7), bilinear quads and 8-node serendipity quads per pixel, from the
+// element's polygon.
 const int MODE_SCANLINE = 0;
 const int MODE_BILINEAR = 1;
+const int MODE_SERENDIPITY = 2;
 
 struct PolygonCorner {
   vec4 position;  // world, w unused
   vec4 B;
+  vec4 midB;  // serendipity quads: B of the mid-edge node after this corner
 };
 layout(std430, binding = 0) readonly buffer Corners { PolygonCorner corners[]; };
 layout(std430, binding = 1) readonly buffer Offsets { uint firstCorner[]; };  // elements + 1 entries
@@ -38,9 +41,9 @@ vec3 scanline(uint first, int count) {
   return scanlineGouraud(count, screen, values, gl_FragCoord.xy, B) ? B : vB;
 }
 
-// Bilinear in the quad's own parameters (s, t): Newton's method for the (s, t) whose point
+// The quad's own parameters (s, t) at this pixel: Newton's method for the (s, t) whose point
 // x(s, t) is nearest this pixel's surface point, as renderer/interp/bilinear_map.cpp does.
-vec3 bilinear(uint first) {
+vec2 quadParameters(uint first) {
   vec3 p0 = corners[first].position.xyz, p1 = corners[first + 1u].position.xyz;
   vec3 p2 = corners[first + 2u].position.xyz, p3 = corners[first + 3u].position.xyz;
   vec2 st = vec2(0.5);
@@ -54,9 +57,31 @@ vec3 bilinear(uint first) {
     float ra = dot(r, a), rb = dot(r, b);
     st -= vec2(bb * ra - ab * rb, aa * rb - ab * ra) / det;
   }
+  return st;
+}
+
+vec3 bilinear(uint first) {
+  vec2 st = quadParameters(first);
   vec3 f0 = corners[first].B.rgb, f1 = corners[first + 1u].B.rgb, f2 = corners[first + 2u].B.rgb,
        f3 = corners[first + 3u].B.rgb;
   return mix(mix(f0, f1, st.x), mix(f3, f2, st.x), st.y);
+}
+
+// The 8-node serendipity quad (C&W §9.2's quadratic elements) on (xi, eta) = 2 (s, t) - 1, the
+// GLSL twin of the quad in renderer/interp/quadratic_lagrange.cpp.
+vec3 serendipity(uint first) {
+  vec2 q = 2.0 * quadParameters(first) - 1.0;
+  float xi = q.x, eta = q.y;
+  const vec2 corner[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
+  vec3 B = vec3(0.0);
+  for (int i = 0; i < 4; ++i) {
+    float a = corner[i].x, b = corner[i].y;
+    B += 0.25 * (1.0 + xi * a) * (1.0 + eta * b) * (xi * a + eta * b - 1.0) * corners[first + uint(i)].B.rgb;
+  }
+  vec3 m0 = corners[first].midB.rgb, m1 = corners[first + 1u].midB.rgb;  // eta = -1, xi = +1
+  vec3 m2 = corners[first + 2u].midB.rgb, m3 = corners[first + 3u].midB.rgb;  // eta = +1, xi = -1
+  return B + 0.5 * (1.0 - xi * xi) * ((1.0 - eta) * m0 + (1.0 + eta) * m2) +
+         0.5 * (1.0 - eta * eta) * ((1.0 + xi) * m1 + (1.0 - xi) * m3);
 }
 
 void main() {
@@ -64,6 +89,7 @@ void main() {
   int count = int(firstCorner[vElement + 1u] - first);
   vec3 B = vB;
   if (mode == MODE_SCANLINE) B = scanline(first, count);
+  else if (mode == MODE_SERENDIPITY) B = serendipity(first);
   else if (count == 4) B = bilinear(first);
   radiosity = vec4(B, 1.0);
 }

@@ -61,14 +61,14 @@ void BezierPass::upload(std::vector<BezierVertex> vertices, int degree) {
 }
 
 void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation) {
-  const size_t patches = vertices_.size() / 3;
+  const size_t patches = std::min(vertices_.size() / 3, evaluation.pieces);
   statistics_.patches = patches;
   glBindVertexArray(vao_);
   if (evaluation.tessellation == 0) {
     perPixel_.set("clipFromWorld", clipFromWorld);
     perPixel_.set("degree", degree_);
     perPixel_.use();
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(vertices_.size()));
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * patches));
     statistics_.draws = 1;
     statistics_.averageLevel = 1.0;
     statistics_.trianglesGenerated = patches;
@@ -137,7 +137,7 @@ void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
 
 double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& draws) {
   updateLevels(evaluation);
-  const size_t patches = vertices_.size() / 3;
+  const size_t patches = std::min(vertices_.size() / 3, evaluation.pieces);
   tessellated_.set("degree", degree_);
   tessellated_.set("heightScale", float(evaluation.surfaceHeight));
   tessellated_.set("eye", evaluation.eye);

@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace radview::gl {
@@ -24,6 +25,8 @@ struct BezierEvaluation {
   // units per unit of luminance, shaded for the eye at `eye`; needs tessellation.
   double surfaceHeight = 0.0;
   glm::vec3 eye{0.0f};
+  // Draw only the first this many pieces (the rest are drawn by another pass).
+  size_t pieces = SIZE_MAX;
 };
 
 inline constexpr int kAdaptiveTessellation = -1;

@@ -73,16 +73,22 @@ void floatAttribute(GLuint vao, GLuint index, GLint components, size_t offset) {
   glVertexArrayAttribBinding(vao, index, 0);
 }
 
+// A vertex array of DisplayVertex triangles, and its buffer.
+void createDisplayVertexArray(GLuint& vao, GLuint& vbo) {
+  createVertexArray(vao, vbo, sizeof(DisplayVertex));
+  floatAttribute(vao, 0, 3, offsetof(DisplayVertex, position));
+  floatAttribute(vao, 1, 3, offsetof(DisplayVertex, B));
+  floatAttribute(vao, 2, 3, offsetof(DisplayVertex, Bflat));
+  glEnableVertexArrayAttrib(vao, 3);
+  glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
+  glVertexArrayAttribBinding(vao, 3, 0);
+}
+
 }  // namespace
 
 MeshRenderer::MeshRenderer() {
-  createVertexArray(meshVao_, meshVbo_, sizeof(DisplayVertex));
-  floatAttribute(meshVao_, 0, 3, offsetof(DisplayVertex, position));
-  floatAttribute(meshVao_, 1, 3, offsetof(DisplayVertex, B));
-  floatAttribute(meshVao_, 2, 3, offsetof(DisplayVertex, Bflat));
-  glEnableVertexArrayAttrib(meshVao_, 3);
-  glVertexArrayAttribIFormat(meshVao_, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
-  glVertexArrayAttribBinding(meshVao_, 3, 0);
+  createDisplayVertexArray(meshVao_, meshVbo_);
+  createDisplayVertexArray(serendipityVao_, serendipityVbo_);
 
   createVertexArray(edgeVao_, edgeVbo_, sizeof(glm::vec3));
   floatAttribute(edgeVao_, 0, 3, 0);
@@ -101,10 +107,11 @@ MeshRenderer::MeshRenderer() {
 }
 
 MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_, netVao_};
-  glDeleteVertexArrays(6, arrays);
-  GLuint buffers[] = {meshVbo_, edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_, splitVbo_, netVbo_};
-  glDeleteBuffers(7, buffers);
+  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_, netVao_, serendipityVao_};
+  glDeleteVertexArrays(7, arrays);
+  GLuint buffers[] = {meshVbo_,     edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_,
+                      splitVbo_,    netVbo_,  serendipityVbo_};
+  glDeleteBuffers(8, buffers);
   glDeleteQueries(2, timerQueries_.data());
   if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
 }
@@ -129,17 +136,27 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   tVertexMarkers_ = static_cast<GLsizei>(display.tVertices.size());
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
-  // Element polygons (corners) for the scanline and bilinear passes, std430: vec4 position,
-  // vec4 B per corner; offsets[e] .. offsets[e+1] are element e's.
+  // Element polygons (corners) for the scanline, bilinear and serendipity passes, std430: per
+  // corner vec4 position, vec4 B, vec4 B of the mid-edge node after it (serendipity quads
+  // only); offsets[e] .. offsets[e+1] are element e's.
   std::vector<glm::vec4> corners;
   std::vector<uint32_t> offsets{0};
-  for (const Element& e : mesh.elements) {
-    for (uint32_t c : e.corners) {
-      corners.push_back(glm::vec4(glm::vec3(mesh.nodes[c].position), 1.0f));
-      corners.push_back(glm::vec4(glm::vec3(mesh.nodes[c].B), 1.0f));
+  std::vector<DisplayVertex> serendipity;
+  for (size_t e = 0; e < mesh.elements.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    const bool quad = isSerendipityQuad(mesh, e);
+    for (size_t k = 0; k < element.corners.size(); ++k) {
+      const Node& node = mesh.nodes[element.corners[k]];
+      corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
+      corners.push_back(glm::vec4(glm::vec3(node.B), 1.0f));
+      corners.push_back(quad ? glm::vec4(glm::vec3(mesh.nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
     }
-    offsets.push_back(uint32_t(corners.size() / 2));
+    offsets.push_back(uint32_t(corners.size() / 3));
   }
+  for (const DisplayVertex& v : display.triangles)
+    if (isSerendipityQuad(mesh, v.element)) serendipity.push_back(v);
+  glNamedBufferData(serendipityVbo_, serendipity.size() * sizeof(DisplayVertex), serendipity.data(), GL_STATIC_DRAW);
+  serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
   glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
   mesh_ = mesh;
@@ -160,7 +177,7 @@ namespace {
 void buildPieces(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
                  std::vector<BezierVertex>& vertices, std::vector<glm::vec3>& split) {
   if (method == ShadingMethod::Quadratic) {
-    vertices = quadraticLagrangeVertices(mesh);
+    vertices = quadraticLagrangeVertices(mesh);  // its serendipity quads last (uploadMesh counts them)
     return;
   }
   const SurfaceTriangulation surface(mesh);
@@ -235,18 +252,32 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else if (method == ShadingMethod::ScanlineGouraud || method == ShadingMethod::Bilinear) {
-    polygonProgram_.set("clipFromWorld", clipFromWorld);
-    polygonProgram_.set("viewportSize", glm::vec2(width, height));
-    polygonProgram_.set("mode", method == ShadingMethod::ScanlineGouraud ? 0 : 1);
-    polygonProgram_.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
-    glBindVertexArray(meshVao_);
-    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
+    drawPolygons(method == ShadingMethod::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
+                 height);
   } else {
-    (method == settings.method ? bezierPass_ : comparisonPass_).draw(clipFromWorld, bezierEvaluation(settings, camera));
+    BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;
+    BezierEvaluation evaluation = bezierEvaluation(settings, camera);
+    // Serendipity quads are exact per pixel in the polygon pass; the radiosity surface draws
+    // them from their (linear) pieces, which it can lift.
+    const bool serendipityPass = method == ShadingMethod::Quadratic && evaluation.surfaceHeight == 0.0;
+    if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
+    pass.draw(clipFromWorld, evaluation);
+    if (serendipityPass && serendipityVertices_ > 0)
+      drawPolygons(2, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void MeshRenderer::drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
+                                int height) {
+  polygonProgram_.set("clipFromWorld", clipFromWorld);
+  polygonProgram_.set("viewportSize", glm::vec2(width, height));
+  polygonProgram_.set("mode", mode);
+  polygonProgram_.use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, vertices);
 }
 
 void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& requested, int width, int height) {

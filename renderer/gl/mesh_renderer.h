@@ -121,6 +121,12 @@ class MeshRenderer {
   GLuint overlayVao_ = 0, overlayVbo_ = 0;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
   GLuint polygonCorners_ = 0, polygonOffsets_ = 0;  // storage buffers: element polygons
+  // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
+  GLuint serendipityVao_ = 0, serendipityVbo_ = 0;
+  GLsizei serendipityVertices_ = 0;
+  // Element polygons per pixel from the storage buffers: mode 0 scanline Gouraud, 1 bilinear,
+  // 2 serendipity; over the DisplayVertex triangles in `vao`.
+  void drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width, int height);
   GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when

@@ -37,12 +37,17 @@ void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>&
 
 }  // namespace
 
-std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh) {
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, size_t* serendipityStart) {
   std::vector<BezierVertex> out;
   auto position = [&](uint32_t n) { return mesh.nodes[n].position; };
   auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
+  std::vector<size_t> serendipity;
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& element = mesh.elements[e];
+    if (isSerendipityQuad(mesh, e)) {
+      serendipity.push_back(e);
+      continue;
+    }
     if (element.order() == ElementOrder::Quadratic && element.corners.size() == 3) {
       const auto& c = element.corners;
       const auto& m = element.midEdge;  // m[i] on edge c[i] -> c[i+1]
@@ -56,6 +61,10 @@ std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh) {
     for (const auto& t : elementTriangles(mesh, e))
       addPiece(out, {position(t[0]), position(t[1]), position(t[2])}, linearBezierNet<6>({B(t[0]), B(t[1]), B(t[2])}));
   }
+  if (serendipityStart) *serendipityStart = out.size() / 3;
+  for (size_t e : serendipity)
+    for (const auto& t : elementTriangles(mesh, e))
+      addPiece(out, {position(t[0]), position(t[1]), position(t[2])}, linearBezierNet<6>({B(t[0]), B(t[1]), B(t[2])}));
   return out;
 }
 

@@ -24,9 +24,11 @@ struct BezierVertex {
 // Quadratic Lagrange elements (C&W §9.2) as quadratic Bezier nets: a 6-node triangle with
 // corner values f_i and mid-edge values m_ij is the net b_200 = f_0, b_110 = 2 m_01 - (f_0 +
 // f_1) / 2, ... Other elements are drawn linear (over the triangles of elementTriangles), as
-// the degree-2 net of a linear function; quadratic quads too (their serendipity form is not a
-// triangle patch; the CPU reference has it).
-std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh);
+// the degree-2 net of a linear function. Serendipity quads (isSerendipityQuad) are not
+// triangle patches: their linear pieces come last, from piece *serendipityStart on, so the
+// per-pixel path can leave them to the polygon pass that evaluates them exactly, while the
+// radiosity surface, which needs pieces to lift, still has them (drawn linear there).
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, size_t* serendipityStart = nullptr);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
 
 // The lines that split each element into its pieces, two points per segment: Clough-Tocher

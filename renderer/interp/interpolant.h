@@ -64,4 +64,9 @@ class Interpolant {
 std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method method,
                                              const InterpolantOptions& options = {});
 
+// Whether Method::Quadratic evaluates the element as an 8-node serendipity quad: a quadratic
+// element with 4 corners, convex (a non-convex quad folds the bilinear map the shape functions
+// live on, so it is interpolated linearly instead, like other quadratic polygons).
+bool isSerendipityQuad(const RadiosityMesh& mesh, size_t element);
+
 }  // namespace radview

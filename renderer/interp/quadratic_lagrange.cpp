@@ -13,17 +13,14 @@ namespace {
 class QuadraticLagrange : public Interpolant {
  public:
   explicit QuadraticLagrange(const RadiosityMesh& mesh)
-      : mesh_(mesh), linear_(makeLinear(mesh, QuadDiagonal::D02)), convexQuad_(mesh.elements.size()) {
-    // Non-convex quads fold the bilinear map the serendipity quad is built on (see Bilinear in
-    // linear_methods.cpp): they are interpolated linearly, like other polygons.
-    for (size_t e = 0; e < mesh.elements.size(); ++e)
-      convexQuad_[e] = mesh.elements[e].corners.size() == 4 && isConvex(mesh.cornerPositions(e));
+      : mesh_(mesh), linear_(makeLinear(mesh, QuadDiagonal::D02)), serendipity_(mesh.elements.size()) {
+    for (size_t e = 0; e < mesh.elements.size(); ++e) serendipity_[e] = isSerendipityQuad(mesh, e);
   }
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
     if (e.order() == ElementOrder::Quadratic && e.corners.size() == 3) return triangle(e, x);
-    if (e.order() == ElementOrder::Quadratic && convexQuad_[element]) return quad(e, x);
+    if (serendipity_[element]) return quad(e, x);
     return linear_->evaluate(element, x);
   }
 
@@ -82,10 +79,15 @@ class QuadraticLagrange : public Interpolant {
 
   const RadiosityMesh& mesh_;
   std::unique_ptr<Interpolant> linear_;
-  std::vector<bool> convexQuad_;
+  std::vector<bool> serendipity_;
 };
 
 }  // namespace
+
+bool isSerendipityQuad(const RadiosityMesh& mesh, size_t element) {
+  const Element& e = mesh.elements[element];
+  return e.order() == ElementOrder::Quadratic && e.corners.size() == 4 && isConvex(mesh.cornerPositions(element));
+}
 
 std::unique_ptr<Interpolant> makeQuadraticLagrange(const RadiosityMesh& mesh) {
   return std::make_unique<QuadraticLagrange>(mesh);
