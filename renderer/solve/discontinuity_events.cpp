@@ -1,0 +1,355 @@
+#include "solve/discontinuity_events.h"
+
+#include "geom/polygon.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace radview {
+
+namespace {
+
+// A scene polygon as the event search sees it: its plane, its outline in that plane, its size.
+struct PolygonGeometry {
+  bool valid = false;  // false for a degenerate polygon (no plane)
+  PlaneFrame frame;
+  std::vector<Vec2> outline;
+  Bounds bounds;
+  double size = 0.0;  // bounding-box diagonal
+  double tolerance = 0.0;
+
+  // Signed distance in front of the polygon's plane.
+  double height(const Vec3& x) const { return glm::dot(frame.n, x - frame.origin); }
+};
+
+PolygonGeometry describe(const Polygon& polygon) {
+  PolygonGeometry g;
+  if (polygon.vertices.size() < 3 || unitNormal(polygon.vertices) == Vec3(0.0)) return g;
+  g.valid = true;
+  g.frame = planeFrame(polygon.vertices);
+  for (const Vec3& p : polygon.vertices) {
+    g.outline.push_back(g.frame.project(p));
+    g.bounds.extend(p);
+  }
+  g.size = g.bounds.diagonal();
+  g.tolerance = kEventTolerance * g.size;
+  return g;
+}
+
+double cross2(const Vec2& a, const Vec2& b) { return a.x * b.y - a.y * b.x; }
+
+double distanceToBoundary(const Vec2& p, const std::vector<Vec2>& polygon) {
+  double d = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < polygon.size(); ++i)
+    d = std::min(d, distanceToSegment(p, polygon[i], polygon[(i + 1) % polygon.size()]));
+  return d;
+}
+
+// Crossing-number test; the caller handles points near the boundary.
+bool strictlyInside(const Vec2& p, const std::vector<Vec2>& polygon) {
+  bool inside = false;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Vec2 &a = polygon[i], &b = polygon[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+  }
+  return inside;
+}
+
+// Narrows [t0, t1] to where the linear function f(t) = f0 + t (f1 - f0) is >= 0.
+void keepNonNegative(double f0, double f1, double& t0, double& t1) {
+  if (f0 >= 0 && f1 >= 0) return;
+  if (f0 < 0 && f1 < 0) {
+    t1 = t0 - 1;  // empty
+    return;
+  }
+  const double root = f0 / (f0 - f1);
+  if (f0 < 0)
+    t0 = std::max(t0, root);
+  else
+    t1 = std::min(t1, root);
+}
+
+// The point where the ray from `apex` through q meets the receiver's plane, beyond q; heights
+// above that plane, hApex > hq >= 0 (similar triangles).
+Vec3 projectFrom(const Vec3& apex, double hApex, const Vec3& q, double hq) {
+  return apex + (hApex / (hApex - hq)) * (q - apex);
+}
+
+// True when the plane through `apex` with unit normal n contains one of the edges from apex
+// to its neighbours in `ring` (apex = ring[i]): the wedge is then D1, not D2.
+bool planeContainsEdgeAt(const Vec3& n, const std::vector<Vec3>& ring, size_t i) {
+  const size_t count = ring.size();
+  for (size_t j : {(i + 1) % count, (i + count - 1) % count}) {
+    const Vec3 edge = ring[j] - ring[i];
+    if (std::abs(glm::dot(n, edge)) <= kEventTolerance * glm::length(edge)) return true;
+  }
+  return false;
+}
+
+// Collects the clipped pieces of one event segment (3D, on the receiver's plane) on it.
+class ReceiverEvents {
+ public:
+  ReceiverEvents(const PolygonGeometry& receiver, std::vector<EventSegment>& out, EventCounts& counts)
+      : receiver_(receiver), out_(out), counts_(counts) {}
+
+  void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order) {
+    ++counts_.found[int(kind)];
+    const Vec2 a = receiver_.frame.project(x0), b = receiver_.frame.project(x1);
+    const auto pieces = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
+    if (pieces.empty()) return;
+    ++counts_.inserted[int(kind)];
+    for (const ParameterInterval& piece : pieces)
+      out_.push_back({a + piece.t0 * (b - a), a + piece.t1 * (b - a), order, kind});
+  }
+
+ private:
+  const PolygonGeometry& receiver_;
+  std::vector<EventSegment>& out_;
+  EventCounts& counts_;
+};
+
+// D0: where `other` touches or passes through the receiver's plane, inside `other` (Heckbert
+// 1992, D0). Returns 3D segments on the receiver's plane; none for a coplanar polygon.
+std::vector<std::array<Vec3, 2>> planeContact(const PolygonGeometry& receiver, const std::vector<Vec3>& vertices,
+                                              const PolygonGeometry& other) {
+  const double tolerance = kEventTolerance * std::max(receiver.size, other.size);
+  std::vector<double> d;
+  bool below = false, above = false, on = false;
+  for (const Vec3& p : vertices) {
+    double h = receiver.height(p);
+    if (std::abs(h) <= tolerance) h = 0.0;
+    d.push_back(h);
+    below |= h < 0;
+    above |= h > 0;
+    on |= h == 0;
+  }
+  if (!on && !(below && above)) return {};
+  if (!below && !above) return {};  // coplanar: it shares the plane, casts nothing across it
+  const Vec3 line = glm::cross(receiver.frame.n, other.frame.n);
+  if (glm::length(line) < kEventTolerance) return {};
+
+  std::vector<Vec3> points;
+  for (size_t i = 0; i < vertices.size(); ++i) {
+    const size_t j = (i + 1) % vertices.size();
+    if (d[i] == 0) points.push_back(vertices[i]);
+    if (d[i] * d[j] < 0) points.push_back(vertices[i] + (d[i] / (d[i] - d[j])) * (vertices[j] - vertices[i]));
+  }
+  std::sort(points.begin(), points.end(),
+            [&](const Vec3& a, const Vec3& b) { return glm::dot(a, line) < glm::dot(b, line); });
+  // Consecutive crossings bound pieces inside or outside `other`; its midpoint tells which.
+  std::vector<std::array<Vec3, 2>> pieces;
+  for (size_t k = 0; k + 1 < points.size(); ++k) {
+    if (glm::distance(points[k], points[k + 1]) <= tolerance) continue;
+    const Vec2 middle = other.frame.project(0.5 * (points[k] + points[k + 1]));
+    if (!strictlyInside(middle, other.outline) && distanceToBoundary(middle, other.outline) > tolerance) continue;
+    if (!pieces.empty() && glm::distance(pieces.back()[1], points[k]) <= tolerance)
+      pieces.back()[1] = points[k + 1];
+    else
+      pieces.push_back({points[k], points[k + 1]});
+  }
+  return pieces;
+}
+
+// The 2D bounding boxes of the receiver and of the occluder's shadow (every occluder vertex
+// projected from every emitter vertex: the shadow lies in their convex hull, as the central
+// projection from a point keeps convex sets convex) miss each other. Only when every
+// projection exists: the occluder lies strictly between the emitter's lowest vertex and the
+// receiver's plane; otherwise it cannot tell and says no.
+bool shadowMissesReceiver(const PolygonGeometry& receiver, const std::vector<Vec3>& emitter,
+                          const std::vector<double>& hEmitter, const std::vector<Vec3>& occluder,
+                          const std::vector<double>& hOccluder, const std::vector<double>& hOccluderFromEmitter) {
+  const double lowest = *std::min_element(hEmitter.begin(), hEmitter.end());
+  for (size_t j = 0; j < occluder.size(); ++j)
+    if (hOccluder[j] < 0 || hOccluder[j] >= lowest * (1 - 1e-6) || hOccluderFromEmitter[j] < 0) return false;
+  Vec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < emitter.size(); ++i)
+    for (size_t j = 0; j < occluder.size(); ++j) {
+      const Vec2 x = receiver.frame.project(projectFrom(emitter[i], hEmitter[i], occluder[j], hOccluder[j]));
+      lo = glm::min(lo, x);
+      hi = glm::max(hi, x);
+    }
+  Vec2 rlo(std::numeric_limits<double>::infinity()), rhi(-std::numeric_limits<double>::infinity());
+  for (const Vec2& p : receiver.outline) {
+    rlo = glm::min(rlo, p);
+    rhi = glm::max(rhi, p);
+  }
+  const double t = receiver.tolerance;
+  return hi.x < rlo.x - t || hi.y < rlo.y - t || lo.x > rhi.x + t || lo.y > rhi.y + t;
+}
+
+// The EV and VE wedges of one (emitter, occluder, receiver) triple that is not culled.
+void wedgeEvents(const std::vector<Vec3>& E, const PolygonGeometry& emitter, const std::vector<Vec3>& O,
+                 const PolygonGeometry& receiver, ReceiverEvents& events) {
+  const double tolR = receiver.tolerance, tolE = emitter.tolerance;
+  std::vector<double> hE(E.size()), hO(O.size()), hOE(O.size());
+  for (size_t i = 0; i < E.size(); ++i) hE[i] = receiver.height(E[i]);
+  for (size_t j = 0; j < O.size(); ++j) {
+    hO[j] = receiver.height(O[j]);
+    hOE[j] = emitter.height(O[j]);
+  }
+  const double hEmitterTop = *std::max_element(hE.begin(), hE.end());
+
+  // EV: emitter vertex e, occluder edge O[j] O[k]; the wedge is the part of the plane
+  // (e, edge) beyond the edge, seen from e; it meets the receiver's plane in the edge's
+  // central projection from e. Kept: the part of the edge in front of the emitter's plane and
+  // between the receiver's plane and e's height (where that projection exists).
+  for (size_t i = 0; i < E.size(); ++i) {
+    if (hE[i] <= tolR) continue;
+    for (size_t j = 0; j < O.size(); ++j) {
+      const size_t k = (j + 1) % O.size();
+      const Vec3 normal = glm::cross(O[k] - O[j], E[i] - O[j]);
+      if (glm::length(normal) <= tolR * glm::length(O[k] - O[j])) continue;  // e on the edge's line
+      double t0 = 0, t1 = 1;
+      keepNonNegative(hO[j] + tolR, hO[k] + tolR, t0, t1);
+      keepNonNegative(hE[i] * (1 - 1e-6) - hO[j], hE[i] * (1 - 1e-6) - hO[k], t0, t1);
+      keepNonNegative(hOE[j] - tolE, hOE[k] - tolE, t0, t1);
+      if (!(t1 - t0 > 1e-12)) continue;
+      auto at = [&](double t) {
+        const Vec3 q = O[j] + t * (O[k] - O[j]);
+        return projectFrom(E[i], hE[i], q, std::max(0.0, receiver.height(q)));
+      };
+      const bool d1 = planeContainsEdgeAt(glm::normalize(normal), E, i);
+      events.add(at(t0), at(t1), EventKind::EmitterVertexOccluderEdge, d1 ? Continuity::C0 : Continuity::C1);
+    }
+  }
+
+  // VE: occluder vertex v, emitter edge E[i] E[k]; the wedge is the plane (v, edge) beyond v,
+  // and meets the receiver's plane in the edge's central projection through v. Kept: the
+  // part of the emitter edge above v (measured from the receiver).
+  for (size_t j = 0; j < O.size(); ++j) {
+    if (hO[j] <= tolR || hOE[j] <= tolE) continue;  // a vertex on the receiver casts a point
+    for (size_t i = 0; i < E.size(); ++i) {
+      const size_t k = (i + 1) % E.size();
+      const Vec3 normal = glm::cross(E[k] - E[i], O[j] - E[i]);
+      if (glm::length(normal) <= tolE * glm::length(E[k] - E[i])) continue;
+      double t0 = 0, t1 = 1;
+      const double margin = hO[j] + 1e-6 * hEmitterTop;
+      keepNonNegative(hE[i] - margin, hE[k] - margin, t0, t1);
+      if (!(t1 - t0 > 1e-12)) continue;
+      auto at = [&](double t) {
+        const Vec3 p = E[i] + t * (E[k] - E[i]);
+        return projectFrom(p, receiver.height(p), O[j], hO[j]);
+      };
+      const bool d1 = planeContainsEdgeAt(glm::normalize(normal), O, j);
+      events.add(at(t0), at(t1), EventKind::OccluderVertexEmitterEdge, d1 ? Continuity::C0 : Continuity::C1);
+    }
+  }
+}
+
+// The bounding tests of findDiscontinuityEvents: true when the occluder cannot shadow the
+// receiver from the emitter.
+bool culled(const std::vector<Vec3>& E, const PolygonGeometry& emitter, const std::vector<Vec3>& O,
+            const PolygonGeometry& receiver, const std::vector<Vec3>& R) {
+  const double tolR = receiver.tolerance, tolE = emitter.tolerance;
+  std::vector<double> hE, hO, hOE;
+  for (const Vec3& e : E) hE.push_back(receiver.height(e));
+  for (const Vec3& o : O) {
+    hO.push_back(receiver.height(o));
+    hOE.push_back(emitter.height(o));
+  }
+  double receiverFarthest = -std::numeric_limits<double>::infinity();
+  for (const Vec3& r : R) receiverFarthest = std::max(receiverFarthest, emitter.height(r));
+  const auto [hOLow, hOHigh] = std::minmax_element(hO.begin(), hO.end());
+  const auto [hOELow, hOEHigh] = std::minmax_element(hOE.begin(), hOE.end());
+  const double hETop = *std::max_element(hE.begin(), hE.end());
+  if (hETop <= tolR || receiverFarthest <= tolE) return true;  // the emitter does not light it
+  if (*hOEHigh <= tolE || *hOHigh <= tolR) return true;        // behind the emitter / receiver
+  // Along a ray from the emitter to the receiver, the height above the receiver falls from
+  // the emitter's to 0 and the distance in front of the emitter grows from 0 to the
+  // receiver's: an occluder outside either range is never on such a ray.
+  if (*hOLow >= hETop - tolR || *hOELow >= receiverFarthest - tolE) return true;
+  return shadowMissesReceiver(receiver, E, hE, O, hO, hOE);
+}
+
+}  // namespace
+
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double lengthSquared = glm::dot(ab, ab);
+  const double t = lengthSquared > 0 ? std::clamp(glm::dot(p - a, ab) / lengthSquared, 0.0, 1.0) : 0.0;
+  return glm::distance(p, a + t * ab);
+}
+
+std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon,
+                                                    double tolerance) {
+  const Vec2 ab = b - a;
+  const double length = glm::length(ab);
+  if (!(length > tolerance) || polygon.size() < 3) return {};
+  // Cut the segment wherever the boundary crosses it or a polygon vertex lies near it; each
+  // piece between cuts is then inside, outside or along the boundary throughout.
+  std::vector<double> cuts = {0.0, 1.0};
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Vec2 &p = polygon[i], &q = polygon[(i + 1) % polygon.size()];
+    const double denominator = cross2(ab, q - p);
+    if (std::abs(denominator) > 1e-300) {
+      const double t = cross2(p - a, q - p) / denominator, s = cross2(p - a, ab) / denominator;
+      if (s >= 0 && s <= 1 && t > 0 && t < 1) cuts.push_back(t);
+    }
+    if (distanceToSegment(p, a, b) <= tolerance) {
+      const double t = glm::dot(p - a, ab) / (length * length);
+      if (t > 0 && t < 1) cuts.push_back(t);
+    }
+  }
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<ParameterInterval> inside;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if ((cuts[k + 1] - cuts[k]) * length <= tolerance) continue;
+    const Vec2 middle = a + (0.5 * (cuts[k] + cuts[k + 1])) * ab;
+    if (distanceToBoundary(middle, polygon) <= tolerance || !strictlyInside(middle, polygon)) continue;
+    if (!inside.empty() && (cuts[k] - inside.back().t1) * length <= tolerance)
+      inside.back().t1 = cuts[k + 1];
+    else
+      inside.push_back({cuts[k], cuts[k + 1]});
+  }
+  return inside;
+}
+
+std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts) {
+  const size_t n = scene.polygons.size();
+  std::vector<PolygonGeometry> geometry;
+  geometry.reserve(n);
+  for (const Polygon& p : scene.polygons) geometry.push_back(describe(p));
+  std::vector<int> emitters;
+  for (size_t p = 0; p < n; ++p)
+    if (geometry[p].valid && scene.materials[scene.polygons[p].material].isEmitter()) emitters.push_back(int(p));
+  auto isEmitter = [&](size_t p) { return std::find(emitters.begin(), emitters.end(), int(p)) != emitters.end(); };
+
+  std::vector<std::vector<EventSegment>> segments(n);
+  for (size_t r = 0; r < n; ++r) {
+    const PolygonGeometry& receiver = geometry[r];
+    if (!receiver.valid || isEmitter(r)) continue;
+    ReceiverEvents events(receiver, segments[r], counts);
+    const std::vector<Vec3>& R = scene.polygons[r].vertices;
+
+    // D0: every other polygon (emitters too) whose bounding box reaches the receiver's.
+    for (size_t p = 0; p < n; ++p) {
+      if (p == r || !geometry[p].valid) continue;
+      const double slack = kEventTolerance * (receiver.size + geometry[p].size);
+      const Bounds& a = receiver.bounds;
+      const Bounds& b = geometry[p].bounds;
+      if (glm::any(glm::lessThan(a.hi + slack, b.lo)) || glm::any(glm::lessThan(b.hi + slack, a.lo))) continue;
+      for (const auto& [x0, x1] : planeContact(receiver, scene.polygons[p].vertices, geometry[p]))
+        events.add(x0, x1, EventKind::Contact, Continuity::Cm1);
+    }
+
+    // EV and VE: every emitter, every occluder that is neither it nor the receiver.
+    for (int e : emitters) {
+      const std::vector<Vec3>& E = scene.polygons[e].vertices;
+      for (size_t o = 0; o < n; ++o) {
+        if (o == r || !geometry[o].valid || isEmitter(o)) continue;
+        const std::vector<Vec3>& O = scene.polygons[o].vertices;
+        if (culled(E, geometry[e], O, receiver, R)) {
+          ++counts.triplesCulled;
+          continue;
+        }
+        ++counts.triplesKept;
+        wedgeEvents(E, geometry[e], O, receiver, events);
+      }
+    }
+  }
+  return segments;
+}
+
+}  // namespace radview

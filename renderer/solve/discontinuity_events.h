@@ -1,0 +1,72 @@
+#pragma once
+// The critical curves of direct illumination from polygonal area emitters, on each receiver:
+// where the emitter's visible part changes its combinatorial structure, the illumination has
+// a discontinuity in value or derivative (Heckbert 1992, "Discontinuity meshing for
+// radiosity"; Lischinski, Tampieri, Greenberg 1992, "Discontinuity meshing for accurate
+// radiosity"). Pure geometry, no CGAL: the segments found here are merged and meshed by
+// discontinuity_segments.h and discontinuity_mesher.h.
+//
+// Continuity orders (the rule implemented, after Heckbert 1992):
+//  - D0, C-1: a polygon touching or passing through the receiver (a box standing on the floor)
+//    cuts the light off on one side at once.
+//  - EV (emitter vertex e, occluder edge) and VE (occluder vertex v, emitter edge) wedges:
+//    crossing one, a vertex of the visible emitter polygon appears or vanishes; the
+//    illumination (a sum over the visible polygon's edges, Lambert's formula) has a jump in
+//    its second derivative: D2, tagged nothing (C1) but inserted, so the mesh follows it.
+//  - The same wedge is D1 (tagged C0) when its plane also contains a second edge at its apex
+//    side: an emitter edge at e (EV) or an occluder edge at v (VE), i.e. an occluder edge
+//    parallel to (or coplanar with) an emitter edge. Crossing it a whole edge of the visible
+//    polygon appears at once, so the first derivative jumps (Heckbert's EE degeneracy; the
+//    penumbra and umbra boundaries of parallel squares).
+#include "mesh/radiosity_mesh.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace radview {
+
+enum class EventKind { Contact, EmitterVertexOccluderEdge, OccluderVertexEmitterEdge };
+
+// One critical segment on one receiver, in the receiver's planeFrame coordinates, inside it.
+struct EventSegment {
+  Vec2 a, b;
+  Continuity order = Continuity::C1;
+  EventKind kind = EventKind::Contact;
+};
+
+struct EventCounts {
+  size_t found[3] = {0, 0, 0};     // per EventKind: considered after culling
+  size_t inserted[3] = {0, 0, 0};  // per EventKind: left at least one segment on the receiver
+  size_t triplesCulled = 0;        // (emitter, occluder, receiver) triples that cannot shadow
+  size_t triplesKept = 0;
+};
+
+// A relative tolerance: lengths below this times a polygon's size count as zero, points this
+// close (relative) count as one. Far above rounding (1e-16), far below any meaningful detail.
+constexpr double kEventTolerance = 1e-7;
+
+// The event segments on every scene polygon (index = polygon index), clipped to the polygon,
+// with the parts lying on its boundary dropped (its edge already separates the elements).
+// Emitters receive nothing and occlude nothing; every other non-degenerate polygon is a
+// receiver and an occluder. Culled, per (emitter, occluder, receiver): an emitter not in
+// front of the receiver or a receiver not in front of the emitter; an occluder entirely
+// behind the emitter's plane, entirely behind the receiver's plane, not below every emitter
+// vertex (measured from the receiver), not nearer the emitter than some receiver point; or
+// whose shadow's bounding box (vertices projected from emitter vertices) misses the
+// receiver's. Parts of a wedge hidden by other occluders are kept (not computed).
+std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts);
+
+// The parts of segment a-b inside a polygon (any simple polygon, concave included), as
+// parameter intervals [t0, t1] of a + t (b - a), sorted; parts within `tolerance` of the
+// boundary and pieces shorter than it are left out.
+struct ParameterInterval {
+  double t0 = 0.0, t1 = 0.0;
+};
+std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon,
+                                                    double tolerance);
+
+// Distance from p to the segment a-b.
+double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+}  // namespace radview

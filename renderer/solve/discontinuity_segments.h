@@ -1,0 +1,37 @@
+#pragma once
+// From the event segments on one receiver to a planar straight-line graph the constrained
+// Delaunay mesher accepts without degenerate slivers: collinear overlapping segments merged
+// (the strongest continuity order wins where they overlap), endpoints closer than a tolerance
+// made one point, segments split where they cross, where another's endpoint lies on them and
+// where they meet the boundary (which gets those points as vertices). Without this, two
+// events computed along the same line in different ways (an EV and a VE wedge of parallel
+// edges) would differ by rounding and leave triangles 1e-16 wide.
+#include "geom/constrained_mesh_cgal.h"
+#include "solve/discontinuity_events.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace radview {
+
+// At most this many merged segments per polygon: the arrangement is quadratic in them and
+// each adds elements. Past it the strongest orders are kept (C-1, then C0, then C1), longer
+// first within an order; the rest are dropped and counted.
+constexpr size_t kMaxSegmentsPerPolygon = 1000;
+
+struct SegmentArrangement {
+  PlanarGraph graph;                     // boundary ring (from the outline) and the segments
+  std::vector<Continuity> order;         // per graph segment
+  std::vector<int> outlinePoint;         // per outline vertex, its graph point
+  size_t mergedSegments[3] = {0, 0, 0};  // per order (C-1, C0, C1): after merging, before splitting
+  size_t dropped = 0;                    // merged segments past kMaxSegmentsPerPolygon
+};
+
+// `outline`: the polygon, counter-clockwise; `segments` inside it (discontinuity_events.h);
+// `tolerance`: the snapping distance (discontinuity_mesher.cpp: rounding level, raised to a
+// thousandth of an element). Outline vertices keep their exact positions; other points snap
+// to them; merged segments lying along a boundary edge are dropped (the edge is there).
+SegmentArrangement arrangeSegments(const std::vector<Vec2>& outline, const std::vector<EventSegment>& segments,
+                                   double tolerance);
+
+}  // namespace radview
