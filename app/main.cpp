@@ -1,6 +1,7 @@
 // radview: a viewer for radiosity solutions (Cohen & Wallace, Radiosity and Realistic Image
 // Synthesis, §9.2-9.3). This file is the command line; each subcommand lives in its own file.
 #include "app/asset_paths.h"
+#include "app/command_solve.h"
 #include "app/commands.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
@@ -152,11 +153,15 @@ int main(int argc, char** argv) {
   sampleCommand->add_option("--element-size", sample.elementSize, "Scenes: element size of the uniform mesh")
       ->check(CLI::Range(1e-12, 1e12));
 
+  SolveOptions solve;
+  CLI::App* solveCommand = addSolveCommand(app, solve);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*renderCommand) return runRender(render);
     if (*infoCommand) return runInfo(info);
     if (*sampleCommand) return runSample(sample);
+    if (*solveCommand) return runSolve(solve);
     if (viewer.file.empty()) viewer.file = bundledScenePath();
     return runViewer(viewer);
   } catch (const Error& e) {

@@ -1,0 +1,186 @@
+#include "app/command_solve.h"
+
+#include "core/error.h"
+#include "core/parallel_for.h"
+#include "interp/t_vertex_repair.h"
+#include "mesh/load_file.h"
+#include "mesh/solution_file.h"
+#include "mesh/topology.h"
+#include "mesh/uniform_mesher.h"
+#include "solve/discontinuity_mesher.h"
+#include "solve/radiosity_solve.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+
+namespace radview {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Patches of a scene, by default: bounds diagonal / 12 (the Cornell box: about 80 mm, 340
+// patches). Shooting costs patches x nodes, so patches are kept coarse; subdivision refines the
+// receiving elements under them (Cohen et al. 1986).
+double defaultPatchSize(const Scene& scene) {
+  const double diagonal = scene.bounds().diagonal();
+  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 12.0 : 1.0;
+}
+
+std::string humanCount(double n) {
+  char text[32];
+  if (n >= 1e9) std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
+  else if (n >= 1e6) std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
+  else if (n >= 1e3) std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
+  else std::snprintf(text, sizeof text, "%.0f", n);
+  return text;
+}
+
+// One line on a terminal, redrawn in place at most 10 times a second. The bar fills as the
+// unshot fraction falls from 1 to the stop fraction, on a log scale (progressive refinement
+// removes a roughly constant factor per sweep of shots).
+class ProgressBar {
+ public:
+  ProgressBar(bool enabled, double stopFraction) : enabled_(enabled), stop_(stopFraction) {}
+  void update(const SolveProgress& p, bool force = false) {
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (!force && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    const double done = p.unshotFraction <= stop_ || stop_ <= 0.0
+                            ? 1.0
+                            : std::clamp(std::log(std::max(p.unshotFraction, 1e-300)) / std::log(stop_), 0.0, 1.0);
+    const int width = 24, filled = int(std::lround(done * width));
+    std::fprintf(stderr, "\r[%s%s] shots %zu  unshot %.2f%%  elements %zu  nodes %zu  %s rays/s ",
+                 std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(), p.shots,
+                 100.0 * p.unshotFraction, p.elements, p.nodes, humanCount(p.raysPerSecond()).c_str());
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  void finish() {
+    if (drawn_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool enabled_;
+  double stop_;
+  bool drawn_ = false;
+  Clock::time_point last_{};
+};
+
+}  // namespace
+
+CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
+  CLI::App* command = app.add_subcommand(
+      "solve", "Solve SCENE's radiosity (progressive refinement, Embree visibility, adaptive subdivision with "
+               "T-vertices) and write a solution file");
+  command->add_option("file", o.file, "A glTF scene (.gltf/.glb)")->required();
+  command->add_option("--out,-o", o.out, "The solution file to write (.glb or .gltf)")->required();
+  command->add_option("--element-size", o.elementSize,
+                      "Edge length of the patches, the initial uniform mesh (default: bounds diagonal / 12)")
+      ->check(CLI::Range(1e-12, 1e12));
+  command->add_option("--min-element-size", o.minElementSize,
+                      "Subdivision splits no element below this size (default: the patch size / 16)")
+      ->check(CLI::Range(1e-12, 1e12));
+  command->add_option("--max-elements", o.maxElements, "Subdivision stops at this many elements")
+      ->check(CLI::Range(size_t(1), kMaxUniformElements))
+      ->capture_default_str();
+  command->add_option("--tolerance", o.tolerance,
+                      "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
+                      "steps of the tone-mapped, sRGB-encoded luminance")
+      ->check(CLI::Range(0.01, 255.0))
+      ->capture_default_str();
+  command->add_flag("--quadratic", o.quadratic, "Quadratic elements: nodes at the middle of every edge too");
+  command->add_flag("--triangulate-t-vertices", o.triangulateTVertices,
+                    "Cut every element with a T-vertex into triangles through it (Baum et al.) before writing");
+  command->add_option("--seed", o.seed, "Seed of the shooter sampling (same seed, same solution)")
+      ->capture_default_str();
+  command->add_option("--samples", o.samples, "Shooter samples per node and shot")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  command->add_option("--unshot", o.unshot, "Stop once the unshot power is this fraction of the emitted power")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command->add_option("--max-shots", o.maxShots, "Stop after this many shots in any case")
+      ->check(CLI::Range(size_t(1), size_t(100000000)))
+      ->capture_default_str();
+  command->add_flag("--discontinuity-meshing", o.discontinuityMeshing,
+                    "Patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
+                    "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
+                    "C-1, D1 boundaries C0");
+  command->add_flag("--no-ambient", o.noAmbient,
+                    "Write the solution without the ambient term (the unshot light, spread evenly)");
+  return command;
+}
+
+int runSolve(const SolveOptions& options) {
+  const auto start = Clock::now();
+  LoadedFile file = loadFile(options.file);
+  if (file.isSolution) throw Error(options.file, "is a solution file already; solve takes a scene");
+  for (const std::string& w : file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
+  const Scene& scene = file.scene;
+  const double patchSize = options.elementSize > 0.0 ? options.elementSize : defaultPatchSize(scene);
+
+  SolveSettings settings;
+  settings.solver.seed = options.seed;
+  settings.solver.samples = options.samples;
+  settings.solver.stopUnshotFraction = options.unshot;
+  settings.solver.maxShots = options.maxShots;
+  settings.solver.quadratic = options.quadratic;
+  settings.subdivision.tolerance = options.tolerance;
+  settings.subdivision.minElementSize = options.minElementSize > 0.0 ? options.minElementSize : patchSize / 16.0;
+  settings.subdivision.maxElements = options.maxElements;
+  settings.ambient = !options.noAmbient;
+
+  ProgressBar bar(isatty(fileno(stderr)) != 0, options.unshot);
+  SolveSummary summary;
+  DiscontinuityMeshReport discontinuities;
+  RadiosityMesh mesh;
+  try {
+    RadiosityMesh initial = options.discontinuityMeshing
+                                ? meshWithDiscontinuities(scene, patchSize, &discontinuities)
+                                : meshUniformly(scene, patchSize);
+    mesh = solveRadiosity(scene, std::move(initial), settings, summary,
+                          [&](const SolveProgress& p) { bar.update(p); });
+  } catch (const Error& e) {
+    bar.finish();
+    throw Error(options.file, e.what());
+  }
+  bar.update(summary.progress, true);
+  bar.finish();
+  size_t repaired = 0;
+  if (options.triangulateTVertices) mesh = repairTVertices(mesh, &repaired);
+  writeSolution(mesh, options.out);
+
+  const MeshTopology topology(mesh);
+  const SolveProgress& p = summary.progress;
+  const EnergyBalance& energy = summary.energy;
+  const double emitted = energy.emitted.r + energy.emitted.g + energy.emitted.b;
+  const double absorbed = energy.absorbed.r + energy.absorbed.g + energy.absorbed.b;
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  std::printf("solved %s -> %s\n", options.file.c_str(), options.out.c_str());
+  std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches, patchSize,
+              mesh.elements.size(), options.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
+              topology.tVertices().size());
+  std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements)\n",
+              summary.subdivisionRounds, summary.elementsSplit, options.tolerance, settings.subdivision.minElementSize,
+              options.maxElements);
+  if (options.discontinuityMeshing) std::cout << discontinuities << "\n" << std::flush;
+  std::printf("discontinuity edges: C-1 %zu, C0 %zu\n", topology.countEdges(Continuity::Cm1),
+              topology.countEdges(Continuity::C0));
+  if (options.triangulateTVertices) std::printf("T-vertex triangulation: %zu elements cut into triangles\n", repaired);
+  std::printf("shots: %zu; unshot: %.3f%% of the emitted power; absorbed: %.2f%% of it\n", p.shots,
+              100.0 * p.unshotFraction, emitted > 0.0 ? 100.0 * absorbed / emitted : 0.0);
+  std::printf("rays: %s, %s rays/s on %u threads\n", humanCount(double(p.rays)).c_str(),
+              humanCount(p.raysPerSecond()).c_str(), workerCount());
+  if (summary.ignoredPolygons > 0) std::printf("ignored: %zu zero-area polygons\n", summary.ignoredPolygons);
+  std::printf("time: %.2f s (form factors %.2f s)\n", seconds, p.seconds);
+  return 0;
+}
+
+}  // namespace radview

@@ -1,0 +1,75 @@
+#include "solve/patch_sampler.h"
+
+#include "core/error.h"
+#include "geom/polygon.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace radview {
+
+uint64_t SampleStream::next() {
+  uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+SampleStream SampleStream::forKey(uint64_t a, uint64_t b, uint64_t c) {
+  // Each key passes through the mixer before the next is added, so (a, b, c) and permutations
+  // of it give unrelated streams.
+  SampleStream mix(a);
+  SampleStream second(mix.next() ^ b);
+  SampleStream third(second.next() ^ c);
+  return SampleStream(third.next());
+}
+
+PatchSampler::PatchSampler(const std::vector<Vec3>& corners, int samples) : corners_(corners) {
+  normal_ = unitNormal(corners);
+  if (normal_ == Vec3(0.0)) throw Error("a shooting patch has zero area");
+  area_ = radview::area(corners);
+  const int wanted = std::max(1, samples);
+  auto gridSide = [&](double pieceArea) {
+    return std::max(1, int(std::lround(std::sqrt(wanted * pieceArea / area_))));
+  };
+  // A planar convex quad is one bilinear piece: its grid follows the quad's shape, which
+  // stratifies better than two triangles would.
+  if (corners.size() == 4 && isStrictlyConvex(corners) &&
+      planarityError(corners) <= 1e-6 * glm::distance(corners[0], corners[2])) {
+    Piece piece{corners[0], corners[1], corners[2], corners[3], true, gridSide(area_), 0.0};
+    pieces_.push_back(piece);
+  } else {
+    for (const auto& t : triangulatePolygon(corners)) {
+      const std::vector<Vec3> triangle = {corners[t[0]], corners[t[1]], corners[t[2]]};
+      Piece piece{triangle[0], triangle[1], triangle[2], Vec3(0.0), false, 1, 0.0};
+      piece.k = gridSide(radview::area(triangle));
+      piece.weight = radview::area(triangle) / (piece.k * piece.k);
+      pieces_.push_back(piece);
+    }
+  }
+  for (const Piece& piece : pieces_) sampleCount_ += size_t(piece.k) * piece.k;
+}
+
+void PatchSampler::draw(SampleStream& stream, std::vector<AreaSample>& out) const {
+  for (const Piece& piece : pieces_) {
+    const double cell = 1.0 / piece.k;
+    for (int i = 0; i < piece.k; ++i)
+      for (int j = 0; j < piece.k; ++j) {
+        const double u = (i + stream.uniform()) * cell, v = (j + stream.uniform()) * cell;
+        if (piece.quad) {
+          // Bilinear p(u, v); the weight is the Jacobian |dp/du x dp/dv| times the cell's area.
+          const Vec3 pu = (1.0 - v) * (piece.b - piece.a) + v * (piece.c - piece.d);
+          const Vec3 pv = (1.0 - u) * (piece.d - piece.a) + u * (piece.c - piece.b);
+          const Vec3 p = (1.0 - v) * ((1.0 - u) * piece.a + u * piece.b) + v * ((1.0 - u) * piece.d + u * piece.c);
+          out.push_back({p, glm::length(glm::cross(pu, pv)) * cell * cell});
+        } else {
+          // The area-preserving map of the unit square onto a triangle (Shirley 1990):
+          // equal cells map to equal areas, so each sample weighs area / k^2.
+          const double s = std::sqrt(u);
+          out.push_back({(1.0 - s) * piece.a + s * (1.0 - v) * piece.b + s * v * piece.c, piece.weight});
+        }
+      }
+  }
+}
+
+}  // namespace radview

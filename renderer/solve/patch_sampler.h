@@ -1,0 +1,60 @@
+#pragma once
+// Area sampling of a shooting patch for the visibility of the element-to-node form factor
+// (Wallace, Elmquist, Haines 1989): a patch is cut into pieces (itself when it is a planar convex quad or a
+// triangle, else its triangles), each sampled on a jittered k x k grid of its parameter square,
+// every sample weighted by the area it stands for.
+#include "core/types.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace radview {
+
+// A small, fast generator with a 64-bit state (SplitMix64, Steele et al. 2014): one per
+// (seed, shot, node), so results do not depend on which thread draws them.
+class SampleStream {
+ public:
+  explicit SampleStream(uint64_t state) : state_(state) {}
+  // A well-mixed seed for the stream of `a`, `b`, `c` (e.g. seed, shot, node).
+  static SampleStream forKey(uint64_t a, uint64_t b, uint64_t c);
+  uint64_t next();
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
+
+ private:
+  uint64_t state_;
+};
+
+struct AreaSample {
+  Vec3 position;
+  double weight = 0.0;  // the area this sample stands for; the weights sum to about the area
+};
+
+class PatchSampler {
+ public:
+  // `corners`: a planar simple polygon (CCW about its normal). About `samples` samples are
+  // drawn (each piece gets at least one, and a square number): samples() says how many.
+  // Throws Error for a degenerate polygon.
+  PatchSampler(const std::vector<Vec3>& corners, int samples);
+
+  const std::vector<Vec3>& corners() const { return corners_; }
+  double area() const { return area_; }
+  const Vec3& normal() const { return normal_; }
+  size_t samples() const { return sampleCount_; }
+  // Appends samples() jittered samples, one per grid cell of every piece.
+  void draw(SampleStream& stream, std::vector<AreaSample>& out) const;
+
+ private:
+  struct Piece {
+    Vec3 a, b, c, d;  // a triangle (a, b, c), or a bilinear quad (a, b, c, d) when `quad`
+    bool quad = false;
+    int k = 1;           // k x k grid
+    double weight = 0.0; // triangle: area / k^2 (the map below preserves area)
+  };
+  std::vector<Vec3> corners_;
+  std::vector<Piece> pieces_;
+  Vec3 normal_{0.0};
+  double area_ = 0.0;
+  size_t sampleCount_ = 0;
+};
+
+}  // namespace radview

@@ -1,0 +1,259 @@
+#include "solve/progressive_refinement.h"
+
+#include "core/error.h"
+#include "core/parallel_for.h"
+#include "geom/polygon.h"
+#include "solve/element_to_node.h"
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace radview {
+
+namespace {
+
+double channelSum(const Rgb& c) { return c.r + c.g + c.b; }
+
+RadiosityMesh validated(RadiosityMesh mesh) {
+  validateMesh(mesh, "radiosity mesh");
+  if (mesh.elements.empty()) throw Error("the scene has no surface to solve (no element of non-zero area)");
+  std::vector<char> used(mesh.materials.size(), 0);
+  for (const Element& element : mesh.elements) used[element.material] = 1;
+  const char* channel[3] = {"red", "green", "blue"};
+  bool emits = false;
+  for (size_t m = 0; m < mesh.materials.size(); ++m) {
+    if (!used[m]) continue;
+    const Material& material = mesh.materials[m];
+    for (int k = 0; k < 3; ++k) {
+      std::ostringstream problem;
+      if (!(material.rho[k] >= 0.0 && material.rho[k] < 1.0))
+        problem << "reflectance rho " << material.rho[k] << " in " << channel[k]
+                << ": the solver needs 0 <= rho < 1 (a surface that absorbs nothing never lets the solution "
+                   "converge)";
+      else if (!(material.E[k] >= 0.0 && std::isfinite(material.E[k])))
+        problem << "emission E " << material.E[k] << " in " << channel[k] << ": it must be finite and >= 0";
+      if (!problem.str().empty()) throw Error("material " + std::to_string(m) + " '" + material.name + "' has " + problem.str());
+    }
+    emits |= material.isEmitter();
+  }
+  if (!emits) throw Error("nothing emits light: no surface has a material with an emission E > 0");
+  return mesh;
+}
+
+}  // namespace
+
+ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings)
+    : settings_(settings), mesh_(validated(std::move(mesh))), refiner_(mesh_), rayCaster_(std::make_unique<RayCaster>(scene)) {
+  for (const Polygon& polygon : scene.polygons) surfaceNormals_.push_back(unitNormal(polygon.vertices));
+  sceneDiagonal_ = scene.bounds().diagonal();
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Element& element = mesh_.elements[e];
+    const Material& material = mesh_.materials[element.material];
+    Patch patch{PatchSampler(mesh_.cornerPositions(e), settings_.samples), material.E, material.rho, material.E,
+                element.surface};
+    emittedPower_ += channelSum(material.E) * patch.sampler.area();
+    elementArea_.push_back(patch.sampler.area());
+    patches_.push_back(std::move(patch));
+    patchOf_.push_back(e);
+  }
+  if (settings_.quadratic) refiner_.makeQuadratic(mesh_);
+  H_.assign(mesh_.nodes.size(), Rgb(0.0));
+  assignReceivers();
+  updateUnshotFraction();
+  progress_.patches = patches_.size();
+}
+
+ProgressiveRefinement::~ProgressiveRefinement() = default;
+
+// A node shared by elements of different surfaces (a mesh that welds across polygons) receives
+// as its first element's surface, as solveDirectIllumination does. It receives a little way
+// from its position towards that element's centroid: a node on the edge where two walls meet
+// lies in the other wall's plane, where the form factor to it is 0 by convention and its rays
+// would graze that wall, but B is continuous there and takes the limit from inside the element
+// (the wall then fills about half of its hemisphere). The step is twice the ray caster's lift,
+// so the rays start in front of the other wall as surely as they end in front of it, or 1 %
+// of the way for an element smaller than that; either way far below the element's size.
+void ProgressiveRefinement::assignReceivers() {
+  nodePoint_.resize(mesh_.nodes.size(), Vec3(0.0));
+  nodeNormal_.resize(mesh_.nodes.size(), Vec3(0.0));
+  nodeSurface_.resize(mesh_.nodes.size(), -1);
+  nodeMaterial_.resize(mesh_.nodes.size(), -1);
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Element& element = mesh_.elements[e];
+    const bool onSurface = element.surface >= 0 && element.surface < int(surfaceNormals_.size()) &&
+                           surfaceNormals_[element.surface] != Vec3(0.0);
+    const Vec3 normal = onSurface ? surfaceNormals_[element.surface] : mesh_.elementNormal(e);
+    const Vec3 inside = centroid(mesh_.cornerPositions(e));
+    for (const auto* list : {&element.corners, &element.midEdge})
+      for (uint32_t node : *list) {
+        if (nodeMaterial_[node] >= 0) continue;
+        const Vec3 toInside = inside - mesh_.nodes[node].position;
+        const double distance = glm::length(toInside);
+        const double step = distance > 0.0 ? std::min(0.01, 2.0 * RayCaster::kLift * sceneDiagonal_ / distance) : 0.0;
+        nodePoint_[node] = mesh_.nodes[node].position + step * toInside;
+        nodeNormal_[node] = normal;
+        nodeSurface_[node] = element.surface;
+        nodeMaterial_[node] = element.material;
+      }
+  }
+}
+
+double ProgressiveRefinement::formFactor(size_t node, size_t shot, size_t& rays,
+                                         std::vector<AreaSample>& scratch) const {
+  const Patch& shooter = patches_[history_[shot].patch];
+  // A polygon does not light itself (it is planar): no rays for that.
+  if (nodeMaterial_[node] < 0 || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) return 0.0;
+  // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
+  // computes it, and a node made by subdivision replays exactly the samples it would have had.
+  SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
+  return elementToNodeFormFactor({nodePoint_[node], nodeNormal_[node]}, shooter.sampler, stream,
+                                 rayCaster_.get(), rays, scratch);
+}
+
+bool ProgressiveRefinement::finished() const {
+  return progress_.unshotFraction <= settings_.stopUnshotFraction || history_.size() >= settings_.maxShots ||
+         !(progress_.unshotFraction > 0.0);
+}
+
+// Cohen et al. 1988, §2: shoot the patch with the most unshot power.
+bool ProgressiveRefinement::step() {
+  if (finished()) return false;
+  uint32_t shooter = 0;
+  double most = -1.0;
+  for (uint32_t p = 0; p < patches_.size(); ++p) {
+    const double power = channelSum(patches_[p].unshot) * patches_[p].sampler.area();
+    if (power > most) {
+      most = power;
+      shooter = p;
+    }
+  }
+  history_.push_back({shooter, patches_[shooter].unshot});
+  patches_[shooter].unshot = Rgb(0.0);
+  const size_t shot = history_.size() - 1;
+  const Rgb deltaB = history_[shot].deltaB;
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<Rgb> deltaH(mesh_.nodes.size(), Rgb(0.0));
+  std::atomic<uint64_t> rays{0};
+  parallelFor(
+      mesh_.nodes.size(),
+      [&](size_t node) {
+        thread_local std::vector<AreaSample> scratch;
+        size_t cast = 0;
+        deltaH[node] = deltaB * formFactor(node, shot, cast, scratch);
+        H_[node] += deltaH[node];
+        rays += cast;
+      },
+      32);
+  progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress_.rays += rays;
+
+  // Cohen et al. 1986 substructuring: what the elements received, area-weighted, is their
+  // patch's new unshot radiosity (times rho). Serial, in element order: deterministic.
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Element& element = mesh_.elements[e];
+    Rgb sum(0.0);
+    for (const auto* list : {&element.corners, &element.midEdge})
+      for (uint32_t node : *list) sum += deltaH[node];
+    const double count = double(element.corners.size() + element.midEdge.size());
+    Patch& patch = patches_[patchOf_[e]];
+    patch.unshot += patch.rho * (sum / count) * (elementArea_[e] / patch.sampler.area());
+  }
+  updateUnshotFraction();
+  return true;
+}
+
+void ProgressiveRefinement::updateUnshotFraction() {
+  double unshot = 0.0;
+  for (const Patch& patch : patches_) unshot += channelSum(patch.unshot) * patch.sampler.area();
+  progress_.unshotFraction = emittedPower_ > 0.0 ? unshot / emittedPower_ : 0.0;
+  progress_.shots = history_.size();
+  progress_.elements = mesh_.elements.size();
+  progress_.nodes = mesh_.nodes.size();
+}
+
+void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
+  const auto start = std::chrono::steady_clock::now();
+  std::atomic<uint64_t> rays{0};
+  parallelFor(
+      mesh_.nodes.size() - firstNode,
+      [&](size_t i) {
+        thread_local std::vector<AreaSample> scratch;
+        const size_t node = firstNode + i;
+        size_t cast = 0;
+        Rgb H(0.0);
+        for (size_t shot = 0; shot < history_.size(); ++shot)
+          H += history_[shot].deltaB * formFactor(node, shot, cast, scratch);
+        H_[node] = H;
+        rays += cast;
+      },
+      4);
+  progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress_.rays += rays;
+}
+
+size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
+  const std::vector<uint32_t> chosen = elementsToSplit(solution(false), criteria);
+  if (chosen.empty()) return 0;
+  const size_t firstNode = mesh_.nodes.size();
+  std::vector<uint32_t> parentOf;
+  const size_t split = refiner_.split(mesh_, chosen, parentOf);
+  for (uint32_t parent : parentOf) patchOf_.push_back(patchOf_[parent]);
+  elementArea_.resize(mesh_.elements.size());
+  for (uint32_t e : chosen) elementArea_[e] = area(mesh_.cornerPositions(e));
+  for (size_t e = elementArea_.size() - parentOf.size(); e < elementArea_.size(); ++e)
+    elementArea_[e] = area(mesh_.cornerPositions(e));
+  H_.resize(mesh_.nodes.size(), Rgb(0.0));
+  assignReceivers();
+  valueNewNodes(firstNode);
+  updateUnshotFraction();
+  return split;
+}
+
+// Cohen et al. 1988, §2.3: the ambient term, the unshot radiosity spread evenly over the scene
+// and interreflected with the area-weighted mean reflectance: R / A * sum unshot_p A_p,
+// R = 1 / (1 - rho_mean).
+Rgb ProgressiveRefinement::ambient() const {
+  Rgb unshot(0.0), rho(0.0);
+  double total = 0.0;
+  for (const Patch& patch : patches_) {
+    unshot += patch.unshot * patch.sampler.area();
+    rho += patch.rho * patch.sampler.area();
+    total += patch.sampler.area();
+  }
+  return (unshot / total) / (Rgb(1.0) - rho / total);
+}
+
+RadiosityMesh ProgressiveRefinement::solution(bool withAmbient) const {
+  RadiosityMesh result = mesh_;
+  result.hasGradients = false;
+  const Rgb extra = withAmbient ? ambient() : Rgb(0.0);
+  for (size_t node = 0; node < result.nodes.size(); ++node) {
+    if (nodeMaterial_[node] < 0) continue;
+    const Material& material = mesh_.materials[nodeMaterial_[node]];
+    result.nodes[node].B = material.E + material.rho * (H_[node] + extra);
+    result.nodes[node].gradient = {};
+  }
+  return result;
+}
+
+EnergyBalance ProgressiveRefinement::energyBalance() const {
+  EnergyBalance balance;
+  for (const Patch& patch : patches_) {
+    balance.emitted += patch.E * patch.sampler.area();
+    balance.unshot += patch.unshot * patch.sampler.area();
+  }
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Element& element = mesh_.elements[e];
+    Rgb sum(0.0);
+    for (const auto* list : {&element.corners, &element.midEdge})
+      for (uint32_t node : *list) sum += H_[node];
+    const Rgb meanH = sum / double(element.corners.size() + element.midEdge.size());
+    balance.absorbed += (Rgb(1.0) - mesh_.materials[element.material].rho) * meanH * elementArea_[e];
+  }
+  return balance;
+}
+
+}  // namespace radview

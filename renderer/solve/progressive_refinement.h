@@ -1,0 +1,113 @@
+#pragma once
+// Progressive refinement radiosity (Cohen, Chen, Wallace, Greenberg 1988), shooting from
+// patches to mesh nodes with ray-traced element-to-node form factors (Wallace, Elmquist,
+// Haines 1989), on a two-level hierarchy (Cohen, Greenberg, Immel, Brock 1986): the shooters are
+// the patches, the elements of the initial mesh, never subdivided; the receivers are the nodes
+// of the elements, which adaptive subdivision refines under the patches.
+#include "mesh/radiosity_mesh.h"
+#include "scene/scene.h"
+#include "solve/adaptive_subdivision.h"
+#include "solve/patch_sampler.h"
+#include "solve/ray_caster.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace radview {
+
+struct SolverSettings {
+  uint64_t seed = 1;
+  int samples = 16;                    // shooter samples per receiving node and shot
+  double stopUnshotFraction = 0.01;    // stop once unshot power <= this * emitted power
+  size_t maxShots = 100000;            // and after this many shots in any case
+  bool quadratic = false;              // make the elements quadratic (mid-edge nodes) first
+};
+
+struct SolveProgress {
+  size_t shots = 0;
+  size_t patches = 0, elements = 0, nodes = 0;
+  double unshotFraction = 1.0;  // unshot power / emitted power, summed over R, G, B
+  uint64_t rays = 0;            // visibility rays cast so far (shooting and replay)
+  double seconds = 0.0;         // time spent computing form factors (shooting and replay)
+  double raysPerSecond() const { return seconds > 0.0 ? double(rays) / seconds : 0.0; }
+};
+
+// Power per channel (B times area) in the scene's units, for the energy balance
+// emitted = absorbed + unshot (+ what leaves an open scene).
+struct EnergyBalance {
+  Rgb emitted{0.0};   // sum over patches of E A
+  Rgb absorbed{0.0};  // sum over elements of (1 - rho) H A, H the mean gathered radiosity of its nodes
+  Rgb unshot{0.0};    // sum over patches of their unshot radiosity times area
+};
+
+class ProgressiveRefinement {
+ public:
+  // `mesh`: any valid radiosity mesh of `scene` (elements on the scene's polygons, the scene's
+  // materials), e.g. meshUniformly's or a discontinuity mesher's; its elements become the
+  // patches. Throws Error when the mesh fails validateMesh or has no element, when no element
+  // emits, or when a material's rho is not in [0, 1) or E is negative or not finite: rho = 1
+  // would never absorb, so the solution would not converge.
+  ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings);
+  ~ProgressiveRefinement();
+
+  // One shot from the patch of largest unshot power (summed over R, G, B). Returns false,
+  // shooting nothing, once the stop criterion is met.
+  bool step();
+  bool finished() const;
+
+  // One round of adaptive subdivision of the elements (elementsToSplit on the current
+  // solution), then the new nodes valued by replaying every shot so far (exactly the values
+  // they would have had, had they existed from the start). Returns the elements split.
+  size_t subdivide(const SubdivisionCriteria& criteria);
+
+  const SolveProgress& progress() const { return progress_; }
+  // The mesh with B = E + rho * (H + ambient) at every node; ambient is Cohen et al. 1988's
+  // estimate of the light not yet shot (0 with withAmbient false, and for a converged solution
+  // about 0): display only, the solution itself never includes it.
+  RadiosityMesh solution(bool withAmbient) const;
+  Rgb ambient() const;
+  EnergyBalance energyBalance() const;
+  // The zero-area polygons the ray caster left out.
+  size_t ignoredPolygons() const { return rayCaster_->skippedPolygons(); }
+
+ private:
+  struct Patch {
+    PatchSampler sampler;
+    Rgb unshot{0.0};
+    Rgb rho{0.0}, E{0.0};
+    int surface = -1;
+  };
+  struct Shot {
+    uint32_t patch = 0;
+    Rgb deltaB{0.0};
+  };
+
+  void assignReceivers();
+  double formFactor(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
+  void valueNewNodes(size_t firstNode);
+  void updateUnshotFraction();
+
+  SolverSettings settings_;
+  RadiosityMesh mesh_;
+  MeshRefiner refiner_;
+  std::unique_ptr<RayCaster> rayCaster_;
+  std::vector<Vec3> surfaceNormals_;  // of the scene's polygons
+  double sceneDiagonal_ = 0.0;
+  std::vector<Patch> patches_;
+  std::vector<uint32_t> patchOf_;     // per element
+  std::vector<double> elementArea_;   // per element
+  // Per node, from the first element that uses it: the point and normal it receives at, its
+  // scene polygon, its material (-1: no element uses it yet); and its gathered radiosity H, the
+  // sum of deltaB F over the shots, so that B = E + rho H.
+  std::vector<Vec3> nodePoint_;
+  std::vector<Vec3> nodeNormal_;
+  std::vector<int> nodeSurface_;
+  std::vector<int> nodeMaterial_;
+  std::vector<Rgb> H_;
+  std::vector<Shot> history_;
+  double emittedPower_ = 0.0;  // sum over channels
+  SolveProgress progress_;
+};
+
+}  // namespace radview

@@ -1,0 +1,142 @@
+#include "solve/ray_caster.h"
+
+#include "core/error.h"
+#include "geom/polygon.h"
+
+#include <embree3/rtcore.h>
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace radview {
+
+namespace {
+
+// Embree reports errors through a callback; the first message is kept for the Error thrown.
+struct ErrorSink {
+  std::mutex mutex;
+  std::string message;
+};
+
+void recordError(void* userPtr, RTCError code, const char* text) {
+  auto* sink = static_cast<ErrorSink*>(userPtr);
+  const std::lock_guard<std::mutex> lock(sink->mutex);
+  if (sink->message.empty())
+    sink->message = "Embree error " + std::to_string(int(code)) + (text ? std::string(": ") + text : std::string());
+}
+
+}  // namespace
+
+struct RayCaster::Embree {
+  ErrorSink errors;
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+
+  ~Embree() {
+    if (scene) rtcReleaseScene(scene);
+    if (device) rtcReleaseDevice(device);
+  }
+  // Throws the recorded error, or `what` failed without a message.
+  void check(const char* what) {
+    const RTCError code = device ? rtcGetDeviceError(device) : RTC_ERROR_UNKNOWN;
+    const std::lock_guard<std::mutex> lock(errors.mutex);
+    if (code == RTC_ERROR_NONE && errors.message.empty()) return;
+    throw Error(std::string("ray casting: ") + what + " failed: " +
+                (errors.message.empty() ? "Embree error " + std::to_string(int(code)) : errors.message));
+  }
+};
+
+RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
+  for (size_t p = 0; p < scene.polygons.size(); ++p)
+    for (const Vec3& v : scene.polygons[p].vertices)
+      if (!isFinite(v)) throw Error("ray casting: polygon " + std::to_string(p) + " has a vertex that is not a finite number");
+  const Bounds bounds = scene.bounds();
+  const double diagonal = bounds.diagonal();
+  if (!std::isfinite(diagonal))
+    throw Error("ray casting: the scene's size is not a finite number (coordinates too large for double)");
+  center_ = bounds.center();
+  scale_ = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
+
+  embree_->device = rtcNewDevice(nullptr);
+  if (!embree_->device) throw Error("ray casting: Embree could not create a device");
+  rtcSetDeviceErrorFunction(embree_->device, recordError, &embree_->errors);
+
+  std::vector<float> vertices;
+  std::vector<unsigned> indices;
+  for (const Polygon& polygon : scene.polygons) {
+    if (unitNormal(polygon.vertices) == Vec3(0.0)) {
+      ++skippedPolygons_;
+      continue;
+    }
+    const unsigned base = unsigned(vertices.size() / 3);
+    for (const Vec3& p : polygon.vertices) {
+      const Vec3 q = (p - center_) * scale_;
+      vertices.insert(vertices.end(), {float(q.x), float(q.y), float(q.z)});
+    }
+    for (const auto& t : triangulatePolygon(polygon.vertices))
+      indices.insert(indices.end(), {base + unsigned(t[0]), base + unsigned(t[1]), base + unsigned(t[2])});
+  }
+  triangleCount_ = indices.size() / 3;
+
+  embree_->scene = rtcNewScene(embree_->device);
+  // Robust: rays through a shared edge of two triangles hit one of them (no leaks through
+  // the edges of the Cornell box's blocks into their shadows).
+  rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
+  if (triangleCount_ > 0) {
+    RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    embree_->check("creating the triangle geometry");
+    auto* vertexBuffer = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size() / 3));
+    auto* indexBuffer = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangleCount_));
+    if (!vertexBuffer || !indexBuffer) {
+      rtcReleaseGeometry(geometry);
+      embree_->check("allocating the geometry buffers");
+      throw Error("ray casting: Embree could not allocate the geometry buffers");
+    }
+    std::copy(vertices.begin(), vertices.end(), vertexBuffer);
+    std::copy(indices.begin(), indices.end(), indexBuffer);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(embree_->scene, geometry);
+    rtcReleaseGeometry(geometry);
+  }
+  rtcCommitScene(embree_->scene);
+  embree_->check("building the scene");
+}
+
+RayCaster::~RayCaster() = default;
+
+void* RayCaster::embreeScene() const { return embree_->scene; }
+
+void RayCaster::embreeRay(const Segment& segment, float origin[3], float direction[3], float& tfar) const {
+  const Vec3 from = (segment.from - center_) * scale_ + kLift * segment.fromNormal;
+  const Vec3 to = (segment.to - center_) * scale_ + kLift * segment.toNormal;
+  const Vec3 d = to - from;
+  for (int k = 0; k < 3; ++k) {
+    origin[k] = float(from[k]);
+    direction[k] = float(d[k]);
+  }
+  tfar = 1.0f;
+}
+
+bool RayCaster::occluded(const Segment& segment) const {
+  float origin[3], direction[3];
+  RTCRay ray;
+  embreeRay(segment, origin, direction, ray.tfar);
+  ray.org_x = origin[0], ray.org_y = origin[1], ray.org_z = origin[2];
+  ray.dir_x = direction[0], ray.dir_y = direction[1], ray.dir_z = direction[2];
+  ray.tnear = 0.0f;
+  ray.time = 0.0f;
+  ray.mask = ~0u;
+  ray.id = 0;
+  ray.flags = 0;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded1(embree_->scene, &context, &ray);
+  // Embree marks an occluded ray by setting tfar to -infinity.
+  return ray.tfar < 0.0f;
+}
+
+}  // namespace radview

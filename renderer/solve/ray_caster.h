@@ -1,0 +1,58 @@
+#pragma once
+// Visibility V(x, y) between two surface points (C&W eq. 4.3's V_ij), by rays cast through
+// Embree 3 against the scene's polygons.
+#include "core/types.h"
+#include "scene/scene.h"
+
+#include <cstddef>
+#include <memory>
+
+namespace radview {
+
+// A segment between two surface points, each with the unit normal of the side it faces: the
+// ray leaves `from` and ends at `to`, both lifted off their surfaces (see RayCaster).
+struct Segment {
+  Vec3 from, fromNormal;
+  Vec3 to, toNormal;
+};
+
+class RayCaster {
+ public:
+  // Builds Embree's BVH over the scene's polygons, triangulated (zero-area polygons are left
+  // out and counted). Geometry goes to Embree in a frame centred on the scene and scaled by its
+  // bounding diagonal, so huge or tiny coordinates keep float precision and the self-
+  // intersection offset means the same everywhere. Throws Error for a vertex or a scene size
+  // that is not a finite number, and for any error Embree reports (its message included).
+  explicit RayCaster(const Scene& scene);
+  ~RayCaster();
+  RayCaster(const RayCaster&) = delete;
+  RayCaster& operator=(const RayCaster&) = delete;
+
+  // True if any polygon blocks the segment. Both ends are lifted by kLift (of the scene's
+  // diagonal) along their normals, so that neither end's own surface, nor a surface it
+  // touches at a corner, counts as a blocker. Thread-safe: any number of threads may query.
+  bool occluded(const Segment& segment) const;
+
+  // The self-intersection offset, a fraction of the scene's bounding diagonal: above float's
+  // rounding of the normalised coordinates (~6e-8), far below any element size.
+  static constexpr double kLift = 1e-5;
+
+  size_t triangleCount() const { return triangleCount_; }
+  size_t skippedPolygons() const { return skippedPolygons_; }  // zero-area polygons left out
+
+  // Embree's scene handle (RTCScene), for measuring Embree alone on the same rays.
+  void* embreeScene() const;
+  // A segment in Embree's frame: ray origin, direction (its length the segment's) and tfar,
+  // exactly as occluded() casts it.
+  void embreeRay(const Segment& segment, float origin[3], float direction[3], float& tfar) const;
+
+ private:
+  struct Embree;
+  std::unique_ptr<Embree> embree_;
+  Vec3 center_{0.0};
+  double scale_ = 1.0;  // world -> Embree: (p - center_) * scale_
+  size_t triangleCount_ = 0;
+  size_t skippedPolygons_ = 0;
+};
+
+}  // namespace radview

@@ -1,0 +1,210 @@
+// Adaptive subdivision: which elements split, the T-vertices it leaves, discontinuity tags
+// carried through splits, quadratic elements, and the solution file round trip.
+#include "solve/adaptive_subdivision.h"
+
+#include "interp/t_vertex_repair.h"
+#include "mesh/load_file.h"
+#include "mesh/solution_file.h"
+#include "mesh/topology.h"
+#include "mesh/uniform_mesher.h"
+#include "solve/radiosity_solve.h"
+#include "tests/solve/solver_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <set>
+
+namespace radview {
+namespace {
+
+// Two unit quads side by side on z = 0, facing +z: x in [0, 1] and [1, 2].
+RadiosityMesh twoQuads(bool duplicateSharedEdge) {
+  RadiosityMesh mesh;
+  mesh.materials = {{"grey", Rgb(0.5), Rgb(0.0)}, {"light", Rgb(0.5), Rgb(1.0)}};
+  for (Vec3 p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(2, 1, 0)})
+    mesh.nodes.push_back(Node{p});
+  mesh.elements.push_back({{0, 1, 2, 3}, {}, 0, 0});
+  if (duplicateSharedEdge) {
+    mesh.nodes.push_back(Node{Vec3(1, 0, 0)});  // 6, a copy of 1
+    mesh.nodes.push_back(Node{Vec3(1, 1, 0)});  // 7, a copy of 2
+    mesh.elements.push_back({{6, 4, 5, 7}, {}, 0, 0});
+  } else {
+    mesh.elements.push_back({{1, 4, 5, 2}, {}, 0, 0});
+  }
+  return mesh;
+}
+
+// Solves the Cornell box with subdivision (patches of 100 mm, to 5 % unshot).
+RadiosityMesh solvedCornell(bool quadratic, SolveSummary& summary) {
+  SolveSettings settings;
+  settings.solver.stopUnshotFraction = 0.05;
+  settings.solver.quadratic = quadratic;
+  settings.subdivision.tolerance = 8.0;
+  settings.subdivision.minElementSize = 12.0;
+  settings.subdivision.maxElements = 3000;
+  const Scene scene = test::cornellBox();
+  return solveRadiosity(scene, meshUniformly(scene, 100.0), settings, summary);
+}
+
+TEST(AdaptiveSubdivisionTest, DisplayValueIsEightBitSrgbOfToneMappedLuminance) {
+  EXPECT_DOUBLE_EQ(displayValue(Rgb(0.0), 1.0), 0.0);
+  EXPECT_NEAR(displayValue(Rgb(1.0), 1.0), 255.0, 1e-9);
+  EXPECT_NEAR(displayValue(Rgb(0.5), 0.4), 255.0 * (1.055 * std::pow(0.2, 1 / 2.4) - 0.055), 1e-9);
+  EXPECT_NEAR(displayValue(Rgb(100.0), 1.0), 255.0, 1e-9);  // saturates
+}
+
+TEST(AdaptiveSubdivisionTest, ChoosesLargeSpreadsWithinTheLimits) {
+  RadiosityMesh mesh = twoQuads(false);
+  mesh.nodes[0].B = Rgb(1.0);  // the left quad spans black to white; the right one is flat
+  SubdivisionCriteria criteria;
+  EXPECT_EQ(elementsToSplit(mesh, criteria), std::vector<uint32_t>{0});
+  criteria.minElementSize = 0.6;  // children would be 0.5: too small
+  EXPECT_TRUE(elementsToSplit(mesh, criteria).empty());
+  criteria.minElementSize = 0.0;
+  criteria.maxElements = 4;  // 2 + 3 would be 5
+  EXPECT_TRUE(elementsToSplit(mesh, criteria).empty());
+  criteria.maxElements = 5;
+  mesh.elements[0].material = 1;  // emitters are not split
+  EXPECT_TRUE(elementsToSplit(mesh, criteria).empty());
+}
+
+TEST(AdaptiveSubdivisionTest, SplittingOneSideLeavesATVertexUntilTheOtherSplits) {
+  RadiosityMesh mesh = twoQuads(false);
+  MeshRefiner refiner(mesh);
+  std::vector<uint32_t> parentOf;
+  EXPECT_EQ(refiner.split(mesh, {0}, parentOf), 1u);
+  EXPECT_EQ(mesh.elements.size(), 5u);
+  EXPECT_EQ(parentOf, std::vector<uint32_t>(3, 0));
+  validateMesh(mesh, "split once");
+  {
+    const MeshTopology topology(mesh);
+    ASSERT_EQ(topology.tVertices().size(), 1u);  // the middle of the shared edge, on quad 1
+    const TVertex& t = topology.tVertices()[0];
+    EXPECT_EQ(t.element, 1u);
+    EXPECT_EQ(mesh.nodes[t.node].position, Vec3(1, 0.5, 0));
+    EXPECT_NEAR(t.t, 0.5, 1e-12);
+  }
+  // Splitting the neighbour reuses that node: no T-vertex is left, no node doubled.
+  const size_t nodes = mesh.nodes.size();
+  refiner.split(mesh, {1}, parentOf);
+  validateMesh(mesh, "split twice");
+  EXPECT_EQ(MeshTopology(mesh).tVertices().size(), 0u);
+  EXPECT_EQ(mesh.nodes.size(), nodes + 4);  // 3 edge midpoints and a centre: the shared one reused
+}
+
+TEST(AdaptiveSubdivisionTest, DiscontinuityEdgesSurviveSplits) {
+  // A C-1 edge (duplicated nodes) between the quads, tagged by the left side's nodes only.
+  RadiosityMesh mesh = twoQuads(true);
+  mesh.discontinuities = {{1, 2, Continuity::Cm1}};
+  MeshRefiner refiner(mesh);
+  std::vector<uint32_t> parentOf;
+  refiner.split(mesh, {1}, parentOf);  // the right side, whose nodes the tag does not name
+  validateMesh(mesh, "right split");
+  {
+    const MeshTopology topology(mesh);  // throws if a tag is not an element edge
+    EXPECT_EQ(topology.countEdges(Continuity::Cm1), 3u);  // left's whole edge, right's two halves
+  }
+  refiner.split(mesh, {0}, parentOf);
+  validateMesh(mesh, "both split");
+  const MeshTopology topology(mesh);
+  EXPECT_EQ(topology.countEdges(Continuity::Cm1), 2u);  // the two halves, each with two sides
+  for (const MeshEdge& edge : topology.edges()) {
+    if (edge.continuity != Continuity::Cm1) continue;
+    EXPECT_EQ(edge.sides.size(), 2u);
+  }
+  // The sides keep their own nodes: the halves' middles are two nodes at one position.
+  std::set<uint32_t> middles;
+  for (uint32_t i = 0; i < mesh.nodes.size(); ++i)
+    if (mesh.nodes[i].position == Vec3(1, 0.5, 0)) middles.insert(i);
+  EXPECT_EQ(middles.size(), 2u);
+
+  // A C0 edge (shared nodes), split on one side only: the unsplit side keeps the whole edge
+  // tagged, the split side its halves.
+  RadiosityMesh shared = twoQuads(false);
+  shared.discontinuities = {{2, 1, Continuity::C0}};
+  MeshRefiner sharedRefiner(shared);
+  sharedRefiner.split(shared, {0}, parentOf);
+  EXPECT_EQ(MeshTopology(shared).countEdges(Continuity::C0), 3u);
+}
+
+TEST(AdaptiveSubdivisionTest, CornellSolveLeavesTVerticesAndWritesThemBack) {
+  SolveSummary summary;
+  const RadiosityMesh mesh = solvedCornell(false, summary);
+  std::printf("Cornell, patches of 100 mm: %zu patches -> %zu elements in %d rounds, %zu nodes\n",
+              summary.progress.patches, mesh.elements.size(), summary.subdivisionRounds, mesh.nodes.size());
+  EXPECT_GT(mesh.elements.size(), summary.progress.patches);
+  EXPECT_LE(mesh.elements.size(), 3000u);
+  validateMesh(mesh, "solved Cornell");
+  for (const Node& node : mesh.nodes) EXPECT_TRUE(isFinite(node.B) && node.B.r >= 0 && node.B.g >= 0 && node.B.b >= 0);
+  const MeshTopology topology(mesh);
+  EXPECT_GT(topology.tVertices().size(), 0u);
+  for (const TVertex& t : topology.tVertices()) {
+    const auto& corners = mesh.elements[t.element].corners;
+    EXPECT_EQ(std::count(corners.begin(), corners.end(), t.node), 0);
+  }
+  // Valued: floor nodes under the short block (inside its footprint) are in its shadow.
+  const std::vector<Vec2> footprint = {{130, 65}, {82, 225}, {240, 272}, {290, 114}};  // (x, z)
+  auto underBlock = [&](const Vec3& p) {
+    for (size_t i = 0; i < 4; ++i) {
+      const Vec2 a = footprint[i], b = footprint[(i + 1) % 4], q(p.x, p.z);
+      if ((b.x - a.x) * (q.y - a.y) - (b.y - a.y) * (q.x - a.x) > -1.0) return false;  // clockwise in (x, z)
+    }
+    return true;
+  };
+  double shadowed = 0.0, open = 0.0;
+  size_t shadowedCount = 0, openCount = 0;
+  for (const Element& element : mesh.elements) {
+    if (element.surface != 0) continue;  // the floor
+    for (uint32_t node : element.corners) {
+      const Vec3& p = mesh.nodes[node].position;
+      if (underBlock(p)) shadowed += mesh.nodes[node].B.g, ++shadowedCount;
+      else if (p.x > 350 && p.z < 200) open += mesh.nodes[node].B.g, ++openCount;
+    }
+  }
+  ASSERT_GT(shadowedCount, 0u);
+  ASSERT_GT(openCount, 0u);
+  EXPECT_LT(shadowed / shadowedCount, 0.3 * open / openCount);
+  const std::string path = ::testing::TempDir() + "/solved_cornell.glb";
+  writeSolution(mesh, path);
+  const LoadedFile read = loadFile(path);
+  ASSERT_TRUE(read.isSolution);
+  ASSERT_EQ(read.mesh.elements.size(), mesh.elements.size());
+  for (size_t e = 0; e < mesh.elements.size(); ++e) EXPECT_EQ(read.mesh.elements[e].order(), mesh.elements[e].order());
+  EXPECT_EQ(MeshTopology(read.mesh).tVertices().size(), topology.tVertices().size());
+  std::remove(path.c_str());
+
+  // Baum et al.'s triangulation around the T-vertices removes them all.
+  size_t repaired = 0;
+  const RadiosityMesh triangulated = repairTVertices(mesh, &repaired);
+  EXPECT_GT(repaired, 0u);
+  EXPECT_EQ(MeshTopology(triangulated).tVertices().size(), 0u);
+}
+
+TEST(AdaptiveSubdivisionTest, QuadraticElementsShareTheirMidEdgeNodes) {
+  SolveSummary summary;
+  const RadiosityMesh mesh = solvedCornell(true, summary);
+  validateMesh(mesh, "quadratic Cornell");
+  for (const Element& element : mesh.elements) ASSERT_EQ(element.order(), ElementOrder::Quadratic);
+  const MeshTopology topology(mesh);
+  size_t interior = 0;
+  for (const MeshEdge& edge : topology.edges()) {
+    // Polygons meeting at a corner of the box share edge positions, not nodes.
+    if (edge.sides.size() != 2) continue;
+    const EdgeSide s = edge.sides[0], t = edge.sides[1];
+    if (mesh.elements[s.element].surface != mesh.elements[t.element].surface) continue;
+    ++interior;
+    EXPECT_EQ(mesh.elements[s.element].midEdge[s.edge], mesh.elements[t.element].midEdge[t.edge]);
+  }
+  EXPECT_GT(interior, 100u);
+  EXPECT_GT(topology.tVertices().size(), 0u);
+  for (const Node& node : mesh.nodes) EXPECT_TRUE(isFinite(node.B));
+  const std::string path = ::testing::TempDir() + "/solved_quadratic.gltf";
+  writeSolution(mesh, path);
+  const LoadedFile read = loadFile(path);
+  for (const Element& element : read.mesh.elements) EXPECT_EQ(element.order(), ElementOrder::Quadratic);
+  std::remove(path.c_str());
+}
+
+}  // namespace
+}  // namespace radview

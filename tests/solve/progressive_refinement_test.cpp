@@ -1,0 +1,253 @@
+// Progressive refinement against physics: the furnace, the energy balance, determinism, and
+// what bad scenes do.
+#include "solve/progressive_refinement.h"
+
+#include "core/error.h"
+#include "geom/polygon.h"
+#include "mesh/uniform_mesher.h"
+#include "solve/element_to_node.h"
+#include "solve/radiosity_solve.h"
+#include "tests/solve/solver_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+namespace radview {
+namespace {
+
+using test::closedCornellBox;
+using test::cornellBox;
+using test::furnaceBox;
+
+// Runs shots until the solver stops; the loop is bounded by maxShots.
+void shootAll(ProgressiveRefinement& solver) {
+  while (solver.step()) {
+  }
+}
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(ProgressiveRefinementTest, FurnaceConvergesToEOverOneMinusRho) {
+  // Every surface emits E = 1 and reflects rho = 0.5, so B = E / (1 - rho) = 2 everywhere
+  // (C&W §2.5's integral equation with a constant solution). 96 patches of 0.25, 16 samples,
+  // stopped at 1e-4 unshot. Measured: every node within 1e-4 of 2 (721 shots).
+  const Scene scene = furnaceBox(Rgb(0.5), Rgb(1.0));
+  SolverSettings settings;
+  settings.stopUnshotFraction = 1e-4;
+  ProgressiveRefinement solver(scene, meshUniformly(scene, 0.25), settings);
+  shootAll(solver);
+  EXPECT_LE(solver.progress().unshotFraction, 1e-4);
+  const RadiosityMesh mesh = solver.solution(false);
+  double worst = 0.0;
+  for (const Node& node : mesh.nodes)
+    for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(node.B[k] - 2.0));
+  EXPECT_LT(worst, 0.005) << "largest |B - 2|";
+  std::printf("furnace: %zu shots, largest |B - 2| = %.4f\n", solver.progress().shots, worst);
+}
+
+TEST(ProgressiveRefinementTest, AmbientTermShowsAPartialFurnaceSolutionNearItsLimit) {
+  // After one shot per patch most light is unshot: the solution alone is far below 2, the
+  // ambient term (Cohen et al. 1988) brings the displayed values close to it.
+  const Scene scene = furnaceBox(Rgb(0.5), Rgb(1.0));
+  SolverSettings settings;
+  settings.maxShots = 96;
+  ProgressiveRefinement solver(scene, meshUniformly(scene, 0.25), settings);
+  shootAll(solver);
+  const RadiosityMesh without = solver.solution(false), with = solver.solution(true);
+  double meanWithout = 0.0, meanWith = 0.0;
+  for (size_t i = 0; i < with.nodes.size(); ++i) {
+    meanWithout += without.nodes[i].B.g / with.nodes.size();
+    meanWith += with.nodes[i].B.g / with.nodes.size();
+  }
+  EXPECT_LT(meanWithout, 1.9);
+  EXPECT_NEAR(meanWith, 2.0, 0.05);
+}
+
+TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergy) {
+  // Emitted power = absorbed + unshot, per channel, when no light leaves the scene. What is
+  // left over is the closure error of the sampled node form factors. Patches of 50 mm, 16
+  // samples, to 1 % unshot. Measured: 2.3 % (blue) to 2.9 % (red) of the emitted power is
+  // unaccounted for: the nodal (corner-mean) integration of what the elements next to a
+  // shooter receive, where the received irradiance varies fastest.
+  const Scene scene = closedCornellBox();
+  ProgressiveRefinement solver(scene, meshUniformly(scene, 50.0), SolverSettings{});
+  shootAll(solver);
+  const EnergyBalance energy = solver.energyBalance();
+  for (int k = 0; k < 3; ++k) {
+    const double residual = (energy.emitted[k] - energy.absorbed[k] - energy.unshot[k]) / energy.emitted[k];
+    EXPECT_LT(std::abs(residual), 0.04) << "channel " << k;
+    std::printf("closed Cornell box, channel %d: (emitted - absorbed - unshot) / emitted = %+.4f\n", k, residual);
+  }
+  EXPECT_LE(solver.progress().unshotFraction, 0.01);
+}
+
+TEST(ProgressiveRefinementTest, OpenCornellBoxLosesLightThroughItsFront) {
+  // The measured box has no front wall: absorbed + unshot falls short of emitted.
+  ProgressiveRefinement solver(cornellBox(), meshUniformly(cornellBox(), 50.0), SolverSettings{});
+  shootAll(solver);
+  const EnergyBalance energy = solver.energyBalance();
+  EXPECT_LT(energy.absorbed.r + energy.unshot.r, 0.9 * energy.emitted.r);
+}
+
+TEST(ProgressiveRefinementTest, SameSeedSameBitsWhateverTheThreads) {
+  const Scene scene = cornellBox();
+  SolverSettings settings;
+  settings.maxShots = 20;
+  settings.seed = 42;
+  auto solve = [&](uint64_t seed) {
+    SolverSettings s = settings;
+    s.seed = seed;
+    ProgressiveRefinement solver(scene, meshUniformly(scene, 80.0), s);
+    shootAll(solver);
+    return solver.solution(true);
+  };
+  const RadiosityMesh a = solve(42), b = solve(42), c = solve(43);
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  bool sameAsOtherSeed = true;
+  for (size_t i = 0; i < a.nodes.size(); ++i) {
+    EXPECT_EQ(std::memcmp(&a.nodes[i].B, &b.nodes[i].B, sizeof(Rgb)), 0) << "node " << i;
+    sameAsOtherSeed &= a.nodes[i].B == c.nodes[i].B;
+  }
+  EXPECT_FALSE(sameAsOtherSeed);
+
+  // Thread independence: the first shot's value at every node, recomputed serially here from
+  // the node's own sample stream, is the solver's (parallel) value, bit for bit.
+  RadiosityMesh initial = meshUniformly(scene, 80.0);
+  ProgressiveRefinement solver(scene, initial, settings);
+  ASSERT_TRUE(solver.step());
+  const RadiosityMesh once = solver.solution(false);
+  uint32_t shooter = 0;
+  double most = -1.0;
+  for (uint32_t e = 0; e < initial.elements.size(); ++e) {
+    const Rgb E = initial.materials[initial.elements[e].material].E;
+    const double power = (E.r + E.g + E.b) * area(initial.cornerPositions(e));
+    if (power > most) most = power, shooter = e;
+  }
+  const Rgb deltaB = initial.materials[initial.elements[shooter].material].E;
+  const PatchSampler sampler(initial.cornerPositions(shooter), settings.samples);
+  const RayCaster caster(scene);
+  std::vector<AreaSample> scratch;
+  std::vector<char> done(initial.nodes.size(), 0);
+  for (uint32_t e = 0; e < initial.elements.size(); ++e) {
+    const Element& element = initial.elements[e];
+    if (element.surface == initial.elements[shooter].surface) continue;
+    const Vec3 n = unitNormal(scene.polygons[element.surface].vertices);
+    const Vec3 inside = centroid(initial.cornerPositions(e));
+    const Material& material = initial.materials[element.material];
+    for (uint32_t node : element.corners) {
+      if (done[node]++) continue;  // a node receives as the first element that has it
+      size_t rays = 0;
+      SampleStream stream = SampleStream::forKey(settings.seed, 0, node);
+      const Vec3 toInside = inside - initial.nodes[node].position;
+      const double step = std::min(0.01, 2.0 * RayCaster::kLift * scene.bounds().diagonal() / glm::length(toInside));
+      const Vec3 x = initial.nodes[node].position + step * toInside;
+      const double F = elementToNodeFormFactor({x, n}, sampler, stream, &caster, rays, scratch);
+      const Rgb expected = material.E + material.rho * ((Rgb(0.0) + deltaB * F) + Rgb(0.0));
+      ASSERT_EQ(std::memcmp(&expected, &once.nodes[node].B, sizeof(Rgb)), 0) << "node " << node;
+    }
+  }
+}
+
+TEST(ProgressiveRefinementTest, NoEmitterIsAClearError) {
+  Scene scene = cornellBox();
+  scene.materials[3].E = Rgb(0.0);
+  EXPECT_NE(errorOf([&] { ProgressiveRefinement(scene, meshUniformly(scene, 100.0), {}); }).find("nothing emits"),
+            std::string::npos);
+}
+
+TEST(ProgressiveRefinementTest, ReflectanceOfOneIsAClearError) {
+  Scene scene = cornellBox();
+  scene.materials[0].rho = Rgb(1.0, 0.5, 0.5);
+  const std::string message = errorOf([&] { ProgressiveRefinement(scene, meshUniformly(scene, 100.0), {}); });
+  EXPECT_NE(message.find("'white' has reflectance rho 1 in red"), std::string::npos) << message;
+}
+
+TEST(ProgressiveRefinementTest, ZeroAreaPolygonsAreIgnoredAndCounted) {
+  Scene scene = cornellBox();
+  scene.polygons.push_back({{{10, 10, 10}, {20, 20, 20}, {30, 30, 30}}, 0});  // collinear: no area
+  SolverSettings settings;
+  settings.maxShots = 5;
+  ProgressiveRefinement solver(scene, meshUniformly(scene, 100.0), settings);
+  shootAll(solver);
+  EXPECT_EQ(solver.ignoredPolygons(), 1u);
+  validateMesh(solver.solution(true), "zero-area test");
+}
+
+TEST(ProgressiveRefinementTest, NonFiniteCoordinatesAreRefused) {
+  // The glTF loader refuses them first (gltf_import_test: "is not finite"); a scene built in
+  // code with one is refused by the mesher or the solver, never solved into NaN.
+  Scene scene = cornellBox();
+  scene.polygons[0].vertices[1].x = std::nan("");
+  EXPECT_NE(errorOf([&] { ProgressiveRefinement(scene, meshUniformly(scene, 100.0), {}); }), "(no error)");
+  RadiosityMesh mesh = meshUniformly(cornellBox(), 100.0);
+  EXPECT_NE(errorOf([&] { ProgressiveRefinement(scene, mesh, {}); }).find("not a finite number"), std::string::npos);
+}
+
+TEST(ProgressiveRefinementTest, HugeAndTinyCoordinatesGiveTheSameSolution) {
+  // Radiosity is scale free. Embree sees the scene normalised to its size, so 1e30 mm and
+  // 1e-30 mm boxes cast the same rays as the 1 mm box, up to the rounding of the normalised
+  // coordinates to float, which may turn a grazing ray: the same B within a relative 1e-4
+  // (measured 1.2e-5).
+  auto solve = [](double scale) {
+    Scene scene = cornellBox();
+    for (Polygon& polygon : scene.polygons)
+      for (Vec3& v : polygon.vertices) v *= scale;
+    SolverSettings settings;
+    settings.maxShots = 10;
+    ProgressiveRefinement solver(scene, meshUniformly(scene, 100.0 * scale), settings);
+    shootAll(solver);
+    return solver.solution(false);
+  };
+  const RadiosityMesh unit = solve(1.0);
+  for (double scale : {1e30, 1e-30}) {
+    const RadiosityMesh scaled = solve(scale);
+    ASSERT_EQ(scaled.nodes.size(), unit.nodes.size());
+    double sumUnit = 0.0, sumScaled = 0.0;
+    for (size_t i = 0; i < unit.nodes.size(); ++i) {
+      ASSERT_TRUE(isFinite(scaled.nodes[i].B));
+      sumUnit += unit.nodes[i].B.r;
+      sumScaled += scaled.nodes[i].B.r;
+    }
+    EXPECT_NEAR(sumScaled, sumUnit, 1e-4 * sumUnit) << "scale " << scale;
+  }
+}
+
+TEST(ProgressiveRefinementTest, EveryRunStopsAtTheShotLimit) {
+  // rho 0.99: nearly nothing is absorbed, the unshot fraction falls very slowly; the shot
+  // limit ends the run.
+  const Scene scene = furnaceBox(Rgb(0.99), Rgb(1.0));
+  SolverSettings settings;
+  settings.maxShots = 30;
+  settings.stopUnshotFraction = 0.0;
+  ProgressiveRefinement solver(scene, meshUniformly(scene, 0.5), settings);
+  shootAll(solver);
+  EXPECT_EQ(solver.progress().shots, 30u);
+  EXPECT_TRUE(solver.finished());
+}
+
+TEST(ProgressiveRefinementTest, SolveReportsProgress) {
+  SolveSettings settings;
+  settings.solver.maxShots = 10;
+  settings.subdivide = false;
+  SolveSummary summary;
+  size_t reports = 0;
+  const RadiosityMesh mesh = solveRadiosity(cornellBox(), meshUniformly(cornellBox(), 100.0), settings, summary,
+                                            [&](const SolveProgress&) { ++reports; });
+  EXPECT_EQ(reports, 10u);
+  EXPECT_EQ(summary.progress.shots, 10u);
+  EXPECT_GT(summary.progress.rays, 0u);
+  EXPECT_GT(summary.progress.raysPerSecond(), 0.0);
+  EXPECT_EQ(summary.progress.elements, mesh.elements.size());
+}
+
+}  // namespace
+}  // namespace radview
