@@ -24,14 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Patches of a scene, by default: bounds diagonal / 12 (the Cornell box: about 80 mm, 340
-// patches). Shooting costs patches x nodes, so patches are kept coarse; subdivision refines the
-// receiving elements under them (Cohen et al. 1986).
-double defaultPatchSize(const Scene& scene) {
-  const double diagonal = scene.bounds().diagonal();
-  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 12.0 : 1.0;
-}
-
 std::string humanCount(double n) {
   char text[32];
   if (n >= 1e9) std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
@@ -74,6 +66,38 @@ class ProgressBar {
 };
 
 }  // namespace
+
+// Patches of a scene, by default: bounds diagonal / 12 (the Cornell box: about 80 mm, 340
+// patches). Shooting costs patches x nodes, so patches are kept coarse; subdivision refines the
+// receiving elements under them (Cohen et al. 1986).
+double defaultPatchSize(const Scene& scene) {
+  const double diagonal = scene.bounds().diagonal();
+  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 12.0 : 1.0;
+}
+
+double patchSizeFor(const SolveOptions& options, const Scene& scene) {
+  return options.elementSize > 0.0 ? options.elementSize : defaultPatchSize(scene);
+}
+
+SolveSettings solveSettingsFrom(const SolveOptions& options, double patchSize) {
+  SolveSettings settings;
+  settings.solver.seed = options.seed;
+  settings.solver.samples = options.samples;
+  settings.solver.stopUnshotFraction = options.unshot;
+  settings.solver.maxShots = options.maxShots;
+  settings.solver.quadratic = options.quadratic;
+  settings.subdivision.tolerance = options.tolerance;
+  settings.subdivision.minElementSize = options.minElementSize > 0.0 ? options.minElementSize : patchSize / 16.0;
+  settings.subdivision.maxElements = options.maxElements;
+  settings.ambient = !options.noAmbient;
+  return settings;
+}
+
+RadiosityMesh initialMesh(const SolveOptions& options, const Scene& scene, DiscontinuityMeshReport* report) {
+  const double patchSize = patchSizeFor(options, scene);
+  return options.discontinuityMeshing ? meshWithDiscontinuities(scene, patchSize, report)
+                                      : meshUniformly(scene, patchSize);
+}
 
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   CLI::App* command = app.add_subcommand(
@@ -124,28 +148,15 @@ int runSolve(const SolveOptions& options) {
   if (file.isSolution) throw Error(options.file, "is a solution file already; solve takes a scene");
   for (const std::string& w : file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   const Scene& scene = file.scene;
-  const double patchSize = options.elementSize > 0.0 ? options.elementSize : defaultPatchSize(scene);
-
-  SolveSettings settings;
-  settings.solver.seed = options.seed;
-  settings.solver.samples = options.samples;
-  settings.solver.stopUnshotFraction = options.unshot;
-  settings.solver.maxShots = options.maxShots;
-  settings.solver.quadratic = options.quadratic;
-  settings.subdivision.tolerance = options.tolerance;
-  settings.subdivision.minElementSize = options.minElementSize > 0.0 ? options.minElementSize : patchSize / 16.0;
-  settings.subdivision.maxElements = options.maxElements;
-  settings.ambient = !options.noAmbient;
+  const double patchSize = patchSizeFor(options, scene);
+  const SolveSettings settings = solveSettingsFrom(options, patchSize);
 
   ProgressBar bar(isatty(fileno(stderr)) != 0, options.unshot);
   SolveSummary summary;
   DiscontinuityMeshReport discontinuities;
   RadiosityMesh mesh;
   try {
-    RadiosityMesh initial = options.discontinuityMeshing
-                                ? meshWithDiscontinuities(scene, patchSize, &discontinuities)
-                                : meshUniformly(scene, patchSize);
-    mesh = solveRadiosity(scene, std::move(initial), settings, summary,
+    mesh = solveRadiosity(scene, initialMesh(options, scene, &discontinuities), settings, summary,
                           [&](const SolveProgress& p) { bar.update(p); });
   } catch (const Error& e) {
     bar.finish();

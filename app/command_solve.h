@@ -1,6 +1,9 @@
 #pragma once
 // radview solve: a scene in, a radiosity solution file out (progressive refinement with
 // adaptive subdivision, renderer/solve/radiosity_solve.h).
+#include "solve/discontinuity_mesher.h"
+#include "solve/radiosity_solve.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
@@ -27,6 +30,12 @@ struct SolveOptions {
 };
 
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& options);
+// Shared with the viewer's background solve, so both solve alike.
+// Patches of a scene, unless --element-size says: bounds diagonal / 12.
+double patchSizeFor(const SolveOptions& options, const Scene& scene);
+SolveSettings solveSettingsFrom(const SolveOptions& options, double patchSize);
+// The patches: meshUniformly's, or meshWithDiscontinuities' (`report` may be null). Throws Error.
+RadiosityMesh initialMesh(const SolveOptions& options, const Scene& scene, DiscontinuityMeshReport* report);
 int runSolve(const SolveOptions& options);
 
 }  // namespace radview

@@ -61,6 +61,7 @@ struct ViewerOptions {
   int frames = 0;    // > 0: run that many frames, then exit
   std::string screenshot;
   std::string size = "1280x800";
+  bool solve = false;  // start solving the scene in the background at once
   DisplayOptions display;
 };
 

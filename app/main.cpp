@@ -102,6 +102,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  app.add_flag("--solve", viewer.solve,
+               "Solve the scene in the background at once (as radview solve), showing it as it converges");
   addDisplayOptions(app, viewer.display);
 
   RenderOptions render;

@@ -1,7 +1,10 @@
+#include "app/background_solve.h"
 #include "app/commands.h"
 #include "app/viewer_panel.h"
 #include "core/error.h"
 #include "core/image_difference.h"
+#include "mesh/solution_file.h"
+#include "mesh/topology.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -55,6 +58,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_L: s.settings.splitLines = !s.settings.splitLines; break;
     case GLFW_KEY_H: s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15; break;
     case GLFW_KEY_W: s.settings.tessellationTriangles = !s.settings.tessellationTriangles; break;
+    case GLFW_KEY_G: (s.solving ? s.cancelSolveRequested : s.solveRequested) = true; break;
     case GLFW_KEY_N: s.settings.controlNet = !s.settings.controlNet; break;
     case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
     case GLFW_KEY_R: rotateView45(s); break;
@@ -107,6 +111,9 @@ void adoptViewedFile(ViewerState& state, ViewedFile viewed) {
   state.camera = state.homeCamera;
   state.rollSteps = 0;
   state.pathToOpen = path;
+  state.solutionPath = std::filesystem::path(path).stem().string() + "-solved.glb";
+  state.solveStatus.clear();
+  state.solving = false;
   state.status = "opened " + path;
   for (const std::string& w : state.viewed.file.warnings) state.status += "\nwarning: " + w;
 }
@@ -185,6 +192,9 @@ int runViewer(const ViewerOptions& options) {
     state.camera = state.homeCamera =
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
 
+  BackgroundSolve solve;
+  state.solveRequested = options.solve && !state.viewed.file.isSolution;
+
   Input input;
   input.state = &state;
   glfwSetWindowUserPointer(window, &input);
@@ -222,8 +232,39 @@ int runViewer(const ViewerOptions& options) {
       // both loads and uploads.
       try {
         ViewedFile next = openForViewing(path, options.display.elementSize);
+        solve.abandon();  // its partial solutions belong to the old scene
         renderer.setMesh(next.mesh);
         adoptViewedFile(state, std::move(next));
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+    if (state.solveRequested) {
+      state.solveRequested = false;
+      solve.start(state.viewed.file.scene, SolveOptions{});
+    }
+    if (state.cancelSolveRequested) {
+      state.cancelSolveRequested = false;
+      solve.cancel();
+    }
+    if (std::optional<RadiosityMesh> solved = solve.takeSolution()) {
+      try {
+        renderer.setMesh(*solved);
+        state.viewed.tVertexCount = MeshTopology(*solved).tVertices().size();
+        state.viewed.mesh = std::move(*solved);
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+    // The status while solving, and once more in the frame it stops.
+    const bool solving = solve.running();
+    if (solving || state.solving) state.solveStatus = solve.status();
+    state.solving = solving;
+    if (state.writeSolutionRequested) {
+      state.writeSolutionRequested = false;
+      try {
+        writeSolution(state.viewed.mesh, state.solutionPath);
+        state.status = "solution written to " + state.solutionPath;
       } catch (const std::exception& e) {
         state.status = e.what();
       }

@@ -30,7 +30,7 @@ const char* shortcutHelp() {
          "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
          "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
          "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
-         "S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
+         "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
          "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
 }
 
@@ -72,6 +72,28 @@ void drawDifferenceControls(ViewerState& state) {
   if (!state.difference.empty()) ImGui::TextWrapped("%s", state.difference.c_str());
 }
 
+// A scene's solve in the background (radview solve's defaults), and writing what is shown.
+void drawSolveControls(ViewerState& state) {
+  if (state.viewed.file.isSolution) return;
+  section("Radiosity solution");
+  if (state.solving) {
+    if (ImGui::Button("Cancel solve [G]")) state.cancelSolveRequested = true;
+  } else if (ImGui::Button("Solve [G]")) {
+    state.solveRequested = true;
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
+                      "the partial solution is shown as it converges (with the ambient term)");
+  ImGui::TextWrapped("%s", state.solveStatus.empty() ? "showing direct light, unoccluded" : state.solveStatus.c_str());
+  char buffer[1024];
+  std::snprintf(buffer, sizeof buffer, "%s", state.solutionPath.c_str());
+  ImGui::PushItemWidth(240);
+  if (ImGui::InputText("##solution", buffer, sizeof buffer)) state.solutionPath = buffer;
+  ImGui::PopItemWidth();
+  ImGui::SameLine();
+  if (ImGui::Button("Write solution")) state.writeSolutionRequested = true;
+}
+
 // Labels beside the colour bar the false-colour views draw at the window's right edge.
 void drawColourBarLabels(const ViewerState& state) {
   const gl::DisplayView view = state.settings.view;
@@ -104,8 +126,10 @@ void drawPanel(ViewerState& state) {
 
   const ViewedFile& viewed = state.viewed;
   ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
-  ImGui::Text("%s: %zu nodes, %zu elements", viewed.file.isSolution ? "solution" : "scene (direct light)",
-              viewed.mesh.nodes.size(), viewed.mesh.elements.size());
+  const char* shown = viewed.file.isSolution          ? "solution"
+                      : state.solveStatus.empty() ? "scene (direct light)"
+                                                  : "scene (radiosity solve)";
+  ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
 
   section("Interpolant (C&W 9.2)");
   int method = static_cast<int>(state.settings.method);
@@ -204,6 +228,8 @@ void drawPanel(ViewerState& state) {
   }
   if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
+
+  drawSolveControls(state);
 
   section("View");
   if (ImGui::Button("Rotate 45 deg [R]")) rotateView45(state);

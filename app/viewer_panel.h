@@ -25,6 +25,13 @@ struct ViewerState {
   std::string referencePath;        // panel's reference image field (difference view)
   bool referenceRequested = false;  // load referencePath as the reference image
   std::string difference;           // the difference view's statistics, when the sizes allow
+  // The background solve (scenes only): requests from the panel, and what it reports.
+  bool solveRequested = false;
+  bool cancelSolveRequested = false;
+  bool solving = false;
+  std::string solveStatus;
+  std::string solutionPath;            // where "Write solution" writes the mesh shown
+  bool writeSolutionRequested = false;
 };
 
 void rotateView45(ViewerState& state);

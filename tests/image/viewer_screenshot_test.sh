@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Runs the real viewer window under Xvfb for a few frames, takes its screenshot, and checks
 # that it shows the scene and the panel (check_screenshot).
-#   viewer_screenshot_test.sh RADVIEW CHECKER OUT_DIR FILE
+#   viewer_screenshot_test.sh RADVIEW CHECKER OUT_DIR FILE NAME [viewer arguments...]
 set -u
-radview=$1 checker=$2 out_dir=$3 file=$4
+radview=$1 checker=$2 out_dir=$3 file=$4 name=$5
+shift 5
 mkdir -p "$out_dir"
-out="$out_dir/viewer-window.png"
+out="$out_dir/$name.png"
 rm -f "$out"
-xvfb-run -a -s "-screen 0 1400x900x24" "$radview" "$file" --frames 5 --size 1200x800 --screenshot "$out" \
+xvfb-run -a -s "-screen 0 1400x900x24" "$radview" "$file" --size 1400x800 --screenshot "$out" "$@" \
   || { echo "the viewer failed under Xvfb"; exit 1; }
 "$checker" "$out"

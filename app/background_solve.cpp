@@ -1,0 +1,97 @@
+#include "app/background_solve.h"
+
+#include "core/error.h"
+#include "mesh/topology.h"
+#include "solve/progressive_refinement.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace radview {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr auto kPublishEvery = std::chrono::milliseconds(250);
+
+std::string describe(const char* phase, const SolveProgress& p, size_t tVertices) {
+  char text[256];
+  std::snprintf(text, sizeof text, "%s: %zu shots, unshot %.2f%%, %zu elements, %zu T-vertices, %.1fM rays/s", phase,
+                p.shots, 100.0 * p.unshotFraction, p.elements, tVertices, p.raysPerSecond() * 1e-6);
+  return text;
+}
+
+}  // namespace
+
+BackgroundSolve::~BackgroundSolve() { cancel(); }
+
+void BackgroundSolve::start(const Scene& scene, const SolveOptions& options) {
+  cancel();
+  cancelled_ = false;
+  running_ = true;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_ = "solving: meshing the patches";
+  }
+  worker_ = std::thread(&BackgroundSolve::run, this, scene, options);
+}
+
+void BackgroundSolve::cancel() {
+  cancelled_ = true;
+  if (worker_.joinable()) worker_.join();
+}
+
+void BackgroundSolve::abandon() {
+  cancel();
+  std::lock_guard<std::mutex> lock(mutex_);
+  latest_.reset();
+  status_.clear();
+}
+
+std::optional<RadiosityMesh> BackgroundSolve::takeSolution() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::optional<RadiosityMesh> out = std::move(latest_);
+  latest_.reset();
+  return out;
+}
+
+std::string BackgroundSolve::status() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return status_;
+}
+
+void BackgroundSolve::publish(RadiosityMesh mesh, const std::string& status) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  latest_ = std::move(mesh);
+  status_ = status;
+}
+
+// The same steps as solveRadiosity (renderer/solve/radiosity_solve.cpp), with a look at the
+// clock and the cancel flag between them.
+void BackgroundSolve::run(Scene scene, SolveOptions options) {
+  try {
+    const SolveSettings settings = solveSettingsFrom(options, patchSizeFor(options, scene));
+    ProgressiveRefinement solver(scene, initialMesh(options, scene, nullptr), settings.solver);
+    auto last = Clock::now();
+    auto show = [&](const char* phase) {
+      RadiosityMesh mesh = solver.solution(settings.ambient);
+      const size_t tVertices = MeshTopology(mesh).tVertices().size();
+      publish(std::move(mesh), describe(phase, solver.progress(), tVertices));
+      last = Clock::now();
+    };
+    show("shooting");
+    while (!cancelled_ && solver.step())
+      if (Clock::now() - last > kPublishEvery) show("shooting");
+    for (int round = 0; !cancelled_ && round < settings.maxRounds; ++round) {
+      show("subdividing");
+      if (solver.subdivide(settings.subdivision) == 0) break;
+    }
+    show(cancelled_ ? "cancelled" : "solved");
+  } catch (const std::exception& e) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    status_ = std::string("solve failed: ") + e.what();
+  }
+  running_ = false;
+}
+
+}  // namespace radview
