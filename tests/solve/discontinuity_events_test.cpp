@@ -6,6 +6,8 @@
 #include "mesh/topology.h"
 #include "solve/discontinuity_mesher.h"
 
+#include "tests/interp/test_print.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -16,12 +18,7 @@
 namespace radview {
 namespace {
 
-// Vec3's operator<< lives in radview, where gtest does not look.
-std::string text(const Vec3& v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+using test::str;
 
 // Square of side `side` centred on the z axis at height z, turned by `angle` about z, facing
 // up (+z) or down.
@@ -95,17 +92,17 @@ void expectParallelSquaresMesh(const ParallelSquares& s, double elementSize) {
     const Vec3 p = mesh.nodes[d.a].position, q = mesh.nodes[d.b].position;
     EXPECT_NEAR(p.z, 0.0, 1e-15);
     int lineP = -1, lineQ = -1;
-    ASSERT_TRUE(onGridLine(p, levels, s.w(), tolerance, &lineP)) << text(p);
-    ASSERT_TRUE(onGridLine(q, levels, s.w(), tolerance, &lineQ)) << text(q);
+    ASSERT_TRUE(onGridLine(p, levels, s.w(), tolerance, &lineP)) << str(p);
+    ASSERT_TRUE(onGridLine(q, levels, s.w(), tolerance, &lineQ)) << str(q);
     // Corners lie on two lines; the edge's line is the one both ends share.
     const int axis = std::abs(p.x - q.x) < tolerance ? 0 : 1;
     const double c = p[axis];
-    ASSERT_NEAR(q[axis], c, tolerance) << text(p) << ' ' << text(q);
+    ASSERT_NEAR(q[axis], c, tolerance) << str(p) << ' ' << str(q);
     int line = -1;
     for (size_t l = 0; l < levels.size(); ++l)
       for (int sign = 0; sign < 2; ++sign)
         if (std::abs(c - (sign ? -levels[l] : levels[l])) <= tolerance) line = axis * 8 + int(l) * 2 + sign;
-    ASSERT_GE(line, 0) << text(p) << ' ' << text(q);
+    ASSERT_GE(line, 0) << str(p) << ' ' << str(q);
     covered[line].push_back(std::minmax(p[1 - axis], q[1 - axis]));
   }
   for (int axis = 0; axis < 2; ++axis)
@@ -168,14 +165,14 @@ TEST(DiscontinuityEventsTest, RotatedOccluderGivesUntaggedD2WedgesAtTheirCentral
         // x = e + h / (h - o) (q - e): q = (x + e) / 2 on an occluder edge, for some e.
         bool found = false;
         for (const Vec3& e : E) found |= onRing(e + (h - o) / h * (x - e), O);
-        EXPECT_TRUE(found) << text(x);
+        EXPECT_TRUE(found) << str(x);
         ++ev;
       } else {
         // x = p + k (v - p), k = h / (h - o): p = (x - k v) / (1 - k) on an emitter edge.
         const double k = h / (h - o);
         bool found = false;
         for (const Vec3& v : O) found |= onRing((x - k * v) / (1 - k), E);
-        EXPECT_TRUE(found) << text(x);
+        EXPECT_TRUE(found) << str(x);
         ++ve;
       }
     }
@@ -202,7 +199,7 @@ TEST(DiscontinuityEventsTest, RotatedOccluderGivesUntaggedD2WedgesAtTheirCentral
         onEdge = t >= 0 && t <= 1 && glm::distance(m, a + t * (b - a)) < 1e-9;
       }
     }
-    EXPECT_TRUE(onEdge) << text(m);
+    EXPECT_TRUE(onEdge) << str(m);
   }
   std::cout << report << "\n";
 }

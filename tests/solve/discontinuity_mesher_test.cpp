@@ -11,6 +11,8 @@
 #include "solve/direct_light.h"
 #include "solve/discontinuity_segments.h"
 
+#include "tests/interp/test_print.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -24,12 +26,7 @@
 namespace radview {
 namespace {
 
-// Vec3's operator<< lives in radview, where gtest does not look.
-std::string text(const Vec3& v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
+using test::str;
 
 using Quad = std::vector<Vec3>;
 
@@ -105,7 +102,7 @@ TEST(DiscontinuityMesherTest, BoxOnTheFloorGivesCm1EdgesAlongItsFootprintWithDup
     if (d.order != Continuity::Cm1) continue;
     ++cm1;
     const Vec3 a = mesh.nodes[d.a].position, b = mesh.nodes[d.b].position;
-    EXPECT_NEAR(std::max(std::abs(a.x), std::abs(a.y)), 0.5, 1e-12) << text(a);
+    EXPECT_NEAR(std::max(std::abs(a.x), std::abs(a.y)), 0.5, 1e-12) << str(a);
     EXPECT_NEAR(a.z, 0.0, 0.0);
     // The other side: a floor element with an edge at the same positions and other nodes.
     bool otherSide = false;
@@ -116,7 +113,7 @@ TEST(DiscontinuityMesherTest, BoxOnTheFloorGivesCm1EdgesAlongItsFootprintWithDup
         if (mesh.nodes[u].position == b && mesh.nodes[v].position == a && u != d.b && v != d.a) otherSide = true;
       }
     }
-    EXPECT_TRUE(otherSide) << text(a) << ' ' << text(b);
+    EXPECT_TRUE(otherSide) << str(a) << ' ' << str(b);
   }
   EXPECT_EQ(topology.countEdges(Continuity::Cm1), cm1);
   EXPECT_EQ(report.edgesCm1, cm1);
@@ -127,7 +124,7 @@ TEST(DiscontinuityMesherTest, BoxOnTheFloorGivesCm1EdgesAlongItsFootprintWithDup
       if (e.surface == 0)
         for (uint32_t n : e.corners)
           if (mesh.nodes[n].position == c) nodes.insert(n);
-    EXPECT_EQ(nodes.size(), 2u) << text(c);
+    EXPECT_EQ(nodes.size(), 2u) << str(c);
   }
 }
 
@@ -187,7 +184,7 @@ TEST(DiscontinuityMesherTest, CornellBoxHasFootprintsAsCm1AndRoundTripsThroughAS
       const bool inside = a.x > 0.01 && a.x < 0.54 && b.x > 0.01 && b.x < 0.54 && a.z > 0.01 && a.z < 0.55;
       if (a.y != 0.0 || b.y != 0.0 || !inside) continue;
       ++footprintEdges;
-      EXPECT_NEAR(coveredFraction(mesh, Continuity::Cm1, floor, a, b, 1e-7), 1.0, 1e-9) << text(a) << ' ' << text(b);
+      EXPECT_NEAR(coveredFraction(mesh, Continuity::Cm1, floor, a, b, 1e-7), 1.0, 1e-9) << str(a) << ' ' << str(b);
     }
   }
   EXPECT_EQ(footprintEdges, 8);
