@@ -1,10 +1,11 @@
 #version 450 core
 #include "lib/scanline_gouraud.glsl"
 // Scanline Gouraud (fig. 9.7), bilinear quads and 8-node serendipity quads per pixel, from the
-// element's polygon.
-const int MODE_SCANLINE = 0;
-const int MODE_BILINEAR = 1;
-const int MODE_SERENDIPITY = 2;
+// element's polygon. MODE, defined by the program, picks one (a compile-time choice: llvmpipe
+// pays for both sides of a branch on a uniform).
+#define MODE_SCANLINE 0
+#define MODE_BILINEAR 1
+#define MODE_SERENDIPITY 2
 
 struct PolygonCorner {
   vec4 position;  // world, w unused
@@ -14,7 +15,6 @@ struct PolygonCorner {
 layout(std430, binding = 0) readonly buffer Corners { PolygonCorner corners[]; };
 layout(std430, binding = 1) readonly buffer Offsets { uint firstCorner[]; };  // elements + 1 entries
 
-uniform int mode;
 uniform mat4 clipFromWorld;
 uniform vec2 viewportSize;
 
@@ -88,8 +88,12 @@ void main() {
   uint first = firstCorner[vElement];
   int count = int(firstCorner[vElement + 1u] - first);
   vec3 B = vB;
-  if (mode == MODE_SCANLINE) B = scanline(first, count);
-  else if (mode == MODE_SERENDIPITY) B = serendipity(first);
-  else if (count == 4) B = bilinear(first);
+#if MODE == MODE_SCANLINE
+  B = scanline(first, count);
+#elif MODE == MODE_SERENDIPITY
+  B = serendipity(first);
+#else
+  if (count == 4) B = bilinear(first);
+#endif
   radiosity = vec4(B, 1.0);
 }

@@ -8,7 +8,6 @@
 layout(triangles, equal_spacing, ccw) in;
 
 uniform mat4 clipFromWorld;
-uniform int degree;
 uniform float heightScale;
 
 in vec3 tcPosition[];
@@ -19,7 +18,7 @@ out vec3 teWorld;
 void main() {
   vec3 beta = gl_TessCoord;
   vec3 position = beta.x * tcPosition[0] + beta.y * tcPosition[1] + beta.z * tcPosition[2];
-  teB = bezierTriangle(degree, pControl, beta);
+  teB = bezierTriangle(pControl, beta);
   if (heightScale > 0.0) {
     vec3 n = normalize(cross(tcPosition[1] - tcPosition[0], tcPosition[2] - tcPosition[0]));
     position += n * heightScale * dot(teB, vec3(0.2126, 0.7152, 0.0722));

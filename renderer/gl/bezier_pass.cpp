@@ -65,9 +65,9 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
   statistics_.patches = patches;
   glBindVertexArray(vao_);
   if (evaluation.tessellation == 0) {
-    perPixel_.set("clipFromWorld", clipFromWorld);
-    perPixel_.set("degree", degree_);
-    perPixel_.use();
+    const ShaderProgram& perPixel = perPixel_[degree_ == 3];
+    perPixel.set("clipFromWorld", clipFromWorld);
+    perPixel.use();
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * patches));
     statistics_.draws = 1;
     statistics_.averageLevel = 1.0;
@@ -84,9 +84,9 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
       statistics_.trianglesGenerated = size_t(generated);
     }
   }
-  tessellated_.set("clipFromWorld", clipFromWorld);
-  tessellated_.set("wireframe", 0);
-  tessellated_.set("shadeSurface", evaluation.surfaceHeight > 0.0 ? 1 : 0);
+  tessellated().set("clipFromWorld", clipFromWorld);
+  tessellated().set("wireframe", 0);
+  tessellated().set("shadeSurface", evaluation.surfaceHeight > 0.0 ? 1 : 0);
   glBeginQuery(GL_PRIMITIVES_GENERATED, primitiveQueries_[frame_ % 2]);
   size_t draws = 0;
   const double levelSum = drawTessellated(evaluation, draws);
@@ -100,9 +100,9 @@ void BezierPass::drawTriangles(const glm::mat4& clipFromWorld, const BezierEvalu
                                const glm::vec4& color) {
   if (evaluation.tessellation == 0 || vertices_.empty()) return;
   glBindVertexArray(vao_);
-  tessellated_.set("clipFromWorld", clipFromWorld);
-  tessellated_.set("wireframe", 1);
-  tessellated_.set("wireColor", color);
+  tessellated().set("clipFromWorld", clipFromWorld);
+  tessellated().set("wireframe", 1);
+  tessellated().set("wireColor", color);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   size_t draws = 0;
   drawTessellated(evaluation, draws);
@@ -138,10 +138,9 @@ void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
 double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& draws) {
   updateLevels(evaluation);
   const size_t patches = std::min(vertices_.size() / 3, evaluation.pieces);
-  tessellated_.set("degree", degree_);
-  tessellated_.set("heightScale", float(evaluation.surfaceHeight));
-  tessellated_.set("eye", evaluation.eye);
-  tessellated_.use();
+  tessellated().set("heightScale", float(evaluation.surfaceHeight));
+  tessellated().set("eye", evaluation.eye);
+  tessellated().use();
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   size_t first = 0;
   double levelSum = 0.0;

@@ -59,12 +59,17 @@ class BezierPass {
   int degree() const { return degree_; }
 
  private:
-  ShaderProgram perPixel_{{"bezier.vert", "bezier.frag"}};
+  // One program per degree, quadratic [0] and cubic [1] (ShaderProgram: compile-time choices).
+  ShaderProgram perPixel_[2] = {ShaderProgram({"bezier.vert", "bezier.frag"}, {"DEGREE 2"}),
+                                ShaderProgram({"bezier.vert", "bezier.frag"}, {"DEGREE 3"})};
+  const ShaderProgram& tessellated() const { return tessellated_[degree_ == 3]; }
   // Sets the per-patch levels for `evaluation` (when they change), then issues the tessellated
   // draws in batches; returns the inner-level sum of the patches.
   double drawTessellated(const BezierEvaluation& evaluation, size_t& draws);
   void updateLevels(const BezierEvaluation& evaluation);
-  ShaderProgram tessellated_{{"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}};
+  ShaderProgram tessellated_[2] = {
+      ShaderProgram({"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}, {"DEGREE 2"}),
+      ShaderProgram({"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}, {"DEGREE 3"})};
   GLuint vao_ = 0, vbo_ = 0, levelsVbo_ = 0;
   std::vector<BezierVertex> vertices_;
   std::vector<TessellationLevels> levels_;  // per patch, as uploaded to levelsVbo_

@@ -270,10 +270,10 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
 
 void MeshRenderer::drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
                                 int height) {
-  polygonProgram_.set("clipFromWorld", clipFromWorld);
-  polygonProgram_.set("viewportSize", glm::vec2(width, height));
-  polygonProgram_.set("mode", mode);
-  polygonProgram_.use();
+  const ShaderProgram& program = polygonPrograms_[mode];
+  program.set("clipFromWorld", clipFromWorld);
+  program.set("viewportSize", glm::vec2(width, height));
+  program.use();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
   glBindVertexArray(vao);

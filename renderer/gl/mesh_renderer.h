@@ -116,7 +116,10 @@ class MeshRenderer {
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram falseColourProgram_{{"fullscreen.vert", "false_colour.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
-  ShaderProgram polygonProgram_{{"polygon.vert", "polygon.frag"}};
+  // The element-polygon methods per pixel, by drawPolygons' mode.
+  ShaderProgram polygonPrograms_[3] = {ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 0"}),
+                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 1"}),
+                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 2"})};
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GLuint overlayVao_ = 0, overlayVbo_ = 0;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers

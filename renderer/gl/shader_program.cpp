@@ -45,12 +45,16 @@ GLenum stageOf(const std::string& file) {
   throw Error("shaders/" + file, "unknown shader stage extension");
 }
 
-std::string expandIncludes(const std::string& text) {
+// The stage's source with its includes expanded and `defines` after the #version line.
+std::string preprocess(const std::string& text, const std::vector<std::string>& defines) {
   std::istringstream in(text);
   std::ostringstream out;
   const std::string directive = "#include \"";
   for (std::string line; std::getline(in, line);) {
-    if (line.rfind(directive, 0) == 0) {
+    if (line.rfind("#version", 0) == 0) {
+      out << line << '\n';
+      for (const std::string& define : defines) out << "#define " << define << '\n';
+    } else if (line.rfind(directive, 0) == 0) {
       const std::string included = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
       out << readRaw(included).text << '\n';
     } else {
@@ -70,7 +74,7 @@ std::string log(GLuint object, GetLog getLog) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::vector<std::string>& stageFiles) {
+ShaderProgram::ShaderProgram(const std::vector<std::string>& stageFiles, const std::vector<std::string>& defines) {
   // Every source is read and every stage known before a GL object exists, so a missing file
   // leaks nothing.
   struct Stage {
@@ -80,7 +84,7 @@ ShaderProgram::ShaderProgram(const std::vector<std::string>& stageFiles) {
   std::vector<Stage> stages;
   for (const std::string& file : stageFiles) {
     const ShaderFile raw = readRaw(file);
-    stages.push_back({stageOf(file), raw.path, expandIncludes(raw.text)});
+    stages.push_back({stageOf(file), raw.path, preprocess(raw.text, defines)});
   }
   std::vector<GLuint> shaders;
   auto releaseShaders = [&] {

@@ -1,7 +1,8 @@
 #pragma once
 // GLSL programs built from the files of shaders/ (embedded at build time; RADVIEW_SHADER_DIR
 // points at a shaders/ folder to read them from disk instead while developing). A shader may
-// `#include "lib/name.glsl"` after its #version line.
+// `#include "lib/name.glsl"` after its #version line; a program may define macros for all its
+// stages (compile-time choices: llvmpipe pays for both sides of a branch on a uniform).
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
@@ -14,7 +15,8 @@ class ShaderProgram {
  public:
   // Stage from the file extension (.vert .tesc .tese .geom .frag). Throws Error with the
   // file name and the driver's log if a stage does not compile or the program does not link.
-  explicit ShaderProgram(const std::vector<std::string>& stageFiles);
+  // `defines` ("NAME VALUE" each) become #define lines after each stage's #version line.
+  explicit ShaderProgram(const std::vector<std::string>& stageFiles, const std::vector<std::string>& defines = {});
   ~ShaderProgram();
   ShaderProgram(const ShaderProgram&) = delete;
   ShaderProgram& operator=(const ShaderProgram&) = delete;

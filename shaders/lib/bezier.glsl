@@ -29,7 +29,12 @@ vec3 cubicBezier(vec4 net[8], vec3 beta) {
          3.0 * v * w * w * c8 + w * w * w * c9;
 }
 
-// Degree 3 (Clough-Tocher) or 2 (Powell-Sabin, quadratic Lagrange).
-vec3 bezierTriangle(int n, vec4 net[8], vec3 beta) {
-  return n == 3 ? cubicBezier(net, beta) : quadraticBezier(net, beta);
+// Degree DEGREE, a macro the program defines: 3 (Clough-Tocher) or 2 (Powell-Sabin, quadratic
+// Lagrange). A compile-time choice, as llvmpipe pays for both sides of a branch on a uniform.
+vec3 bezierTriangle(vec4 net[8], vec3 beta) {
+#if DEGREE == 3
+  return cubicBezier(net, beta);
+#else
+  return quadraticBezier(net, beta);
+#endif
 }
