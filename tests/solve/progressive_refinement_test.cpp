@@ -72,22 +72,33 @@ TEST(ProgressiveRefinementTest, AmbientTermShowsAPartialFurnaceSolutionNearItsLi
   EXPECT_NEAR(meanWith, 2.0, 0.05);
 }
 
-TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergy) {
+TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergyBetterOnFinerMeshes) {
   // Emitted power = absorbed + unshot, per channel, when no light leaves the scene. What is
-  // left over is the closure error of the sampled node form factors. Patches of 50 mm, 16
-  // samples, to 1 % unshot. Measured: 2.3 % (blue) to 2.9 % (red) of the emitted power is
-  // unaccounted for: the nodal (corner-mean) integration of what the elements next to a
-  // shooter receive, where the received irradiance varies fastest.
+  // left over is a discretisation error of nodal radiosities (Wallace et al. 1989): a shot's
+  // power is received as point values at nodes, and an element absorbs its corner mean times
+  // its area, which is not the integral of the irradiance over it. Were it Monte Carlo noise
+  // or bias of the visibility fractions it would not depend on the mesh; it does, and not on
+  // the samples. Measured (16 samples, to 1 % unshot; 64 samples change the third digit only):
+  // patches of 100 mm +4.0..4.7 %, 50 mm +2.3..2.9 %, 25 mm +0.9..1.2 % (red worst).
   const Scene scene = closedCornellBox();
-  ProgressiveRefinement solver(scene, meshUniformly(scene, 50.0), SolverSettings{});
-  shootAll(solver);
-  const EnergyBalance energy = solver.energyBalance();
+  auto residuals = [&](double patchSize) {
+    ProgressiveRefinement solver(scene, meshUniformly(scene, patchSize), SolverSettings{});
+    shootAll(solver);
+    EXPECT_LE(solver.progress().unshotFraction, 0.01);
+    const EnergyBalance energy = solver.energyBalance();
+    Rgb residual;
+    for (int k = 0; k < 3; ++k) {
+      residual[k] = (energy.emitted[k] - energy.absorbed[k] - energy.unshot[k]) / energy.emitted[k];
+      std::printf("closed Cornell box, %g mm patches, channel %d: (emitted - absorbed - unshot) / emitted = %+.4f\n",
+                  patchSize, k, residual[k]);
+    }
+    return residual;
+  };
+  const Rgb coarse = residuals(100.0), fine = residuals(50.0);
   for (int k = 0; k < 3; ++k) {
-    const double residual = (energy.emitted[k] - energy.absorbed[k] - energy.unshot[k]) / energy.emitted[k];
-    EXPECT_LT(std::abs(residual), 0.04) << "channel " << k;
-    std::printf("closed Cornell box, channel %d: (emitted - absorbed - unshot) / emitted = %+.4f\n", k, residual);
+    EXPECT_LT(std::abs(fine[k]), 0.04) << "channel " << k;
+    EXPECT_LT(std::abs(fine[k]), 0.75 * std::abs(coarse[k])) << "channel " << k << ": the residual must shrink with h";
   }
-  EXPECT_LE(solver.progress().unshotFraction, 0.01);
 }
 
 TEST(ProgressiveRefinementTest, OpenCornellBoxLosesLightThroughItsFront) {
