@@ -86,6 +86,9 @@ SolveSettings solveSettingsFrom(const SolveOptions& options, double patchSize) {
   settings.solver.stopUnshotFraction = options.unshot;
   settings.solver.maxShots = options.maxShots;
   settings.solver.quadratic = options.quadratic;
+  // A discontinuity mesh's triangles are far smaller than a patch near the shadow boundaries:
+  // they shoot in groups of the patch size, and receive one by one.
+  if (options.discontinuityMeshing) settings.solver.shooterSize = patchSize;
   settings.subdivision.tolerance = options.tolerance;
   settings.subdivision.minElementSize = options.minElementSize > 0.0 ? options.minElementSize : patchSize / 16.0;
   settings.subdivision.maxElements = options.maxElements;
@@ -136,7 +139,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   command->add_flag("--discontinuity-meshing", o.discontinuityMeshing,
                     "Patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
                     "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
-                    "C-1, D1 boundaries C0");
+                    "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size");
   command->add_flag("--no-ambient", o.noAmbient,
                     "Write the solution without the ambient term (the unshot light, spread evenly)");
   return command;

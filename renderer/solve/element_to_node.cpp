@@ -1,17 +1,22 @@
 #include "solve/element_to_node.h"
 
-#include "solve/form_factor.h"
-
 namespace radview {
 
-double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
-                               const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch) {
-  const double F0 = pointToPolygonFormFactor(x.position, x.normal, shooter.corners());
-  if (F0 == 0.0 || !visibility) return F0;
+namespace {
+
+// The estimator both functions share; `sampleB(k)` is what sample k carries, `meanB` what the
+// whole patch shoots on average (the answer when no sample is in front of both).
+template <typename Value, typename SampleValue>
+Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleValue& sampleB, const Value& meanB,
+             SampleStream& stream, const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch) {
+  const double F0 = shooter.unoccluded().from(x.position, x.normal);
+  if (F0 == 0.0) return Value(0.0);
+  if (!visibility) return F0 * meanB;
   scratch.clear();
   shooter.draw(stream, scratch);
   const Vec3& N = shooter.normal();
-  double seen = 0.0, all = 0.0;
+  Value seen(0.0);
+  double all = 0.0;
   for (const AreaSample& sample : scratch) {
     const Vec3 d = sample.position - x.position;
     const double r2 = glm::dot(d, d);
@@ -19,11 +24,30 @@ double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shoot
     if (!(K > 0.0)) continue;
     all += K;
     ++rays;
-    if (!visibility->occluded({x.position, x.normal, sample.position, N})) seen += K;
+    if (!visibility->occluded({x.position, x.normal, sample.position, N})) seen += K * sampleB(sample);
   }
   // No sample in front of both (a sliver of the shooter above the horizon that the samples
   // missed): nothing says it is hidden.
-  return all > 0.0 ? F0 * (seen / all) : F0;
+  return all > 0.0 ? F0 * (seen / all) : F0 * meanB;
+}
+
+}  // namespace
+
+double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
+                               const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch) {
+  return gather(x, shooter, [](const AreaSample&) { return 1.0; }, 1.0, stream, visibility, rays, scratch);
+}
+
+Rgb radiosityFromPatch(const ReceiverPoint& x, const PatchSampler& shooter, const std::vector<Rgb>& polygonB,
+                       SampleStream& stream, const RayCaster* visibility, size_t& rays,
+                       std::vector<AreaSample>& scratch) {
+  if (polygonB.size() == 1)  // one radiosity: the form factor times it, the same bits as alone
+    return polygonB[0] * elementToNodeFormFactor(x, shooter, stream, visibility, rays, scratch);
+  Rgb mean(0.0);
+  for (size_t p = 0; p < polygonB.size(); ++p) mean += polygonB[p] * shooter.polygonArea(p);
+  mean /= shooter.area();
+  return gather(x, shooter, [&](const AreaSample& s) { return polygonB[s.polygon]; }, mean, stream, visibility,
+                rays, scratch);
 }
 
 }  // namespace radview

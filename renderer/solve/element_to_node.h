@@ -17,7 +17,7 @@ struct ReceiverPoint {
 };
 
 // F(dA_x -> A_i) = F0 * (sum_k K_k V_k) / (sum_k K_k), F0 the exact unoccluded point-to-polygon
-// form factor (pointToPolygonFormFactor) and the fraction its visible share, estimated over the
+// form factor (PatchFormFactor) and the fraction its visible share, estimated over the
 // shooter's samples k, each weighted by its share of the kernel, K_k = w_k cos(theta_x)
 // cos(theta_k) / r_k^2 (C&W §4.9.2: the analytic unoccluded factor times ray-cast visibility).
 //
@@ -33,5 +33,16 @@ struct ReceiverPoint {
 // is reused between calls.
 double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
                                const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch);
+
+// The radiosity x gathers from a shooter whose polygons shoot different radiosities B_p (a
+// patch grouping several elements, shooting_patches.h): F0 * (sum_k K_k V_k B_p(k)) / (sum_k K_k),
+// the same estimator with each sample carrying its polygon's radiosity. It is
+// elementToNodeFormFactor times B where every B_p is B, and otherwise keeps what each polygon
+// shoots where it is, at the resolution of the samples (with one B for the whole patch, a
+// shadowed part of it would shoot the lit part's light). `polygonB` has one entry per polygon
+// the sampler was built from.
+Rgb radiosityFromPatch(const ReceiverPoint& x, const PatchSampler& shooter, const std::vector<Rgb>& polygonB,
+                       SampleStream& stream, const RayCaster* visibility, size_t& rays,
+                       std::vector<AreaSample>& scratch);
 
 }  // namespace radview

@@ -7,11 +7,24 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace radview {
 
 namespace {
 
+// Lambert's edge term for R_i -> R_next (relative to x, scaled), times 2 pi.
+double edgeTerm(const Vec3& Ri, const Vec3& Rnext, const Vec3& n) {
+  const Vec3 c = glm::cross(Rnext, Ri);
+  const double cLength = glm::length(c);  // |R_i| |R_i+1| sin(beta)
+  // x on the edge's line: beyond the edge beta = 0 and the term vanishes; on the edge
+  // itself x would be on the emitter's plane, excluded by the callers. Repeated vertices (from
+  // clipping) land here too.
+  if (cLength == 0.0) return 0.0;
+  const double beta = std::atan2(cLength, glm::dot(Ri, Rnext));  // accurate at every angle
+  return beta * glm::dot(n, c) / cLength;
+}
 
 // Sutherland-Hodgman against one plane: keeps the part of the polygon with dot(p, n) >= 0.
 // Vertices are relative to x, so the plane passes through the origin.
@@ -61,20 +74,59 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
   if (R.size() < 3) return 0.0;
 
   double sum = 0.0;
-  for (size_t i = 0; i < R.size(); ++i) {
-    const Vec3& Ri = R[i];
-    const Vec3& Rnext = R[(i + 1) % R.size()];
-    const Vec3 c = glm::cross(Rnext, Ri);
-    const double cLength = glm::length(c);  // |R_i| |R_i+1| sin(beta)
-    // x on the edge's line: beyond the edge beta = 0 and the term vanishes; on the edge
-    // itself x would be on the emitter's plane, excluded above. Repeated vertices (from
-    // clipping) land here too.
-    if (cLength == 0.0) continue;
-    const double beta = std::atan2(cLength, glm::dot(Ri, Rnext));  // accurate at every angle
-    sum += beta * glm::dot(n, c) / cLength;
-  }
+  for (size_t i = 0; i < R.size(); ++i) sum += edgeTerm(R[i], R[(i + 1) % R.size()], n);
   // Above the horizon and in front of the emitter the integrand is >= 0 and the whole
   // hemisphere gives 1: clamp the rounding.
+  return std::clamp(sum / glm::two_pi<double>(), 0.0, 1.0);
+}
+
+PatchFormFactor::PatchFormFactor(const std::vector<std::vector<Vec3>>& polygons) {
+  double largest = 0.0;
+  Bounds bounds;
+  std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, int> edges;
+  auto key = [](const Vec3& v) { return std::array<double, 3>{v.x, v.y, v.z}; };
+  for (const std::vector<Vec3>& polygon : polygons) {
+    const double a = area(polygon);
+    if (!(a > 0.0)) continue;
+    polygons_.push_back(polygon);
+    if (a > largest) {
+      largest = a;
+      normal_ = unitNormal(polygon);
+      pointOnPlane_ = centroid(polygon);
+    }
+    for (size_t i = 0; i < polygon.size(); ++i) {
+      const Vec3& a0 = polygon[i];
+      const Vec3& a1 = polygon[(i + 1) % polygon.size()];
+      bounds.extend(a0);
+      auto reverse = edges.find({key(a1), key(a0)});
+      if (reverse != edges.end() && reverse->second > 0)
+        --reverse->second;
+      else
+        ++edges[{key(a0), key(a1)}];
+    }
+  }
+  for (const auto& [edge, count] : edges)
+    for (int k = 0; k < count; ++k)
+      outline_.push_back({Vec3(edge.first[0], edge.first[1], edge.first[2]), Vec3(edge.second[0], edge.second[1], edge.second[2])});
+  size_ = bounds.diagonal();
+}
+
+double PatchFormFactor::from(const Vec3& x, const Vec3& n) const {
+  RADVIEW_CHECK(isFinite(x) && isFinite(n) && std::abs(glm::dot(n, n) - 1.0) < 1e-6);
+  if (polygons_.empty() || !(glm::dot(x - pointOnPlane_, normal_) > 1e-12 * size_)) return 0.0;
+  double scale = 0.0;
+  bool cut = false;
+  for (const auto& edge : outline_) {
+    scale = std::max(scale, glm::length(edge[0] - x));
+    cut |= glm::dot(edge[0] - x, n) < 0.0;
+  }
+  if (cut) {
+    double F = 0.0;
+    for (const std::vector<Vec3>& polygon : polygons_) F += pointToPolygonFormFactor(x, n, polygon);
+    return std::min(F, 1.0);
+  }
+  double sum = 0.0;
+  for (const auto& edge : outline_) sum += edgeTerm((edge[0] - x) / scale, (edge[1] - x) / scale, n);
   return std::clamp(sum / glm::two_pi<double>(), 0.0, 1.0);
 }
 

@@ -2,6 +2,7 @@
 // Form factors between a differential receiver area and a polygon (C&W ch. 4).
 #include "core/types.h"
 
+#include <array>
 #include <vector>
 
 namespace radview {
@@ -18,5 +19,24 @@ namespace radview {
 // (a receiver touching the emitter), where F jumps. Preconditions (always checked): x, n and
 // the vertices are finite and n has unit length.
 double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon);
+
+// The same form factor to a shooting patch (one or more non-overlapping polygons in one plane,
+// facing one way), prepared once for the many receivers of a shot: what depends on the patch
+// alone (normals, centroids, its outline) is computed here, not per receiver. Lambert's edge
+// sum is additive over polygons, and the polygons' shared edges cancel (traversed both ways),
+// so a receiver that sees the whole patch above its horizon sums over the outline only; one
+// whose horizon cuts the patch sums pointToPolygonFormFactor over the polygons, which clips
+// each. Same result and preconditions as summing pointToPolygonFormFactor, to rounding.
+class PatchFormFactor {
+ public:
+  explicit PatchFormFactor(const std::vector<std::vector<Vec3>>& polygons);
+  double from(const Vec3& x, const Vec3& n) const;
+
+ private:
+  std::vector<std::vector<Vec3>> polygons_;  // the non-degenerate ones
+  std::vector<std::array<Vec3, 2>> outline_;  // directed edges not cancelled by their reverse
+  Vec3 normal_{0.0}, pointOnPlane_{0.0};
+  double size_ = 0.0;                        // bounding diagonal
+};
 
 }  // namespace radview

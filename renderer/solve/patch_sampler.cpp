@@ -24,24 +24,37 @@ SampleStream SampleStream::forKey(uint64_t a, uint64_t b, uint64_t c) {
   return SampleStream(third.next());
 }
 
-PatchSampler::PatchSampler(const std::vector<Vec3>& corners, int samples) : corners_(corners) {
-  normal_ = unitNormal(corners);
-  if (normal_ == Vec3(0.0)) throw Error("a shooting patch has zero area");
-  area_ = radview::area(corners);
+PatchSampler::PatchSampler(const std::vector<Vec3>& corners, int samples)
+    : PatchSampler(std::vector<std::vector<Vec3>>{corners}, samples) {}
+
+PatchSampler::PatchSampler(const std::vector<std::vector<Vec3>>& polygons, int samples) : unoccluded_(polygons) {
+  double largest = 0.0;
+  for (const std::vector<Vec3>& polygon : polygons) {
+    const double a = radview::area(polygon);
+    polygonAreas_.push_back(a);
+    area_ += a;
+    if (a > largest) {
+      largest = a;
+      normal_ = unitNormal(polygon);
+    }
+  }
+  if (!(area_ > 0.0) || normal_ == Vec3(0.0)) throw Error("a shooting patch has zero area");
   const int wanted = std::max(1, samples);
   auto gridSide = [&](double pieceArea) {
     return std::max(1, int(std::lround(std::sqrt(wanted * pieceArea / area_))));
   };
-  // A planar convex quad is one bilinear piece: its grid follows the quad's shape, which
-  // stratifies better than two triangles would.
-  if (corners.size() == 4 && isStrictlyConvex(corners) &&
-      planarityError(corners) <= 1e-6 * glm::distance(corners[0], corners[2])) {
-    Piece piece{corners[0], corners[1], corners[2], corners[3], true, gridSide(area_), 0.0};
-    pieces_.push_back(piece);
-  } else {
+  for (uint32_t polygon = 0; polygon < polygons.size(); ++polygon) {
+    const std::vector<Vec3>& corners = polygons[polygon];
+    // A planar convex quad is one bilinear piece: its grid follows the quad's shape, which
+    // stratifies better than two triangles would.
+    if (corners.size() == 4 && isStrictlyConvex(corners) &&
+        planarityError(corners) <= 1e-6 * glm::distance(corners[0], corners[2])) {
+      pieces_.push_back({corners[0], corners[1], corners[2], corners[3], true, polygon, gridSide(radview::area(corners)), 0.0});
+      continue;
+    }
     for (const auto& t : triangulatePolygon(corners)) {
       const std::vector<Vec3> triangle = {corners[t[0]], corners[t[1]], corners[t[2]]};
-      Piece piece{triangle[0], triangle[1], triangle[2], Vec3(0.0), false, 1, 0.0};
+      Piece piece{triangle[0], triangle[1], triangle[2], Vec3(0.0), false, polygon, 1, 0.0};
       piece.k = gridSide(radview::area(triangle));
       piece.weight = radview::area(triangle) / (piece.k * piece.k);
       pieces_.push_back(piece);
@@ -61,12 +74,12 @@ void PatchSampler::draw(SampleStream& stream, std::vector<AreaSample>& out) cons
           const Vec3 pu = (1.0 - v) * (piece.b - piece.a) + v * (piece.c - piece.d);
           const Vec3 pv = (1.0 - u) * (piece.d - piece.a) + u * (piece.c - piece.b);
           const Vec3 p = (1.0 - v) * ((1.0 - u) * piece.a + u * piece.b) + v * ((1.0 - u) * piece.d + u * piece.c);
-          out.push_back({p, glm::length(glm::cross(pu, pv)) * cell * cell});
+          out.push_back({p, glm::length(glm::cross(pu, pv)) * cell * cell, piece.polygon});
         } else {
           // The area-preserving map of the unit square onto a triangle (Shirley 1990):
           // equal cells map to equal areas, so each sample weighs area / k^2.
           const double s = std::sqrt(u);
-          out.push_back({(1.0 - s) * piece.a + s * (1.0 - v) * piece.b + s * v * piece.c, piece.weight});
+          out.push_back({(1.0 - s) * piece.a + s * (1.0 - v) * piece.b + s * v * piece.c, piece.weight, piece.polygon});
         }
       }
   }

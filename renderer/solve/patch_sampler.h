@@ -1,9 +1,11 @@
 #pragma once
 // Area sampling of a shooting patch for the visibility of the element-to-node form factor
-// (Wallace, Elmquist, Haines 1989): a patch is cut into pieces (itself when it is a planar convex quad or a
-// triangle, else its triangles), each sampled on a jittered k x k grid of its parameter square,
-// every sample weighted by the area it stands for.
+// (Wallace, Elmquist, Haines 1989): a patch (one polygon, or several coplanar ones) is cut into
+// pieces (a polygon itself when it is a planar convex quad or a triangle, else its triangles),
+// each sampled on a jittered k x k grid of its parameter square, every sample weighted by the
+// area it stands for.
 #include "core/types.h"
+#include "solve/form_factor.h"
 
 #include <cstdint>
 #include <vector>
@@ -26,7 +28,8 @@ class SampleStream {
 
 struct AreaSample {
   Vec3 position;
-  double weight = 0.0;  // the area this sample stands for; the weights sum to about the area
+  double weight = 0.0;   // the area this sample stands for; the weights sum to about the area
+  uint32_t polygon = 0;  // which of the patch's polygons it lies on
 };
 
 class PatchSampler {
@@ -35,9 +38,15 @@ class PatchSampler {
   // drawn (each piece gets at least one, and a square number): samples() says how many.
   // Throws Error for a degenerate polygon.
   PatchSampler(const std::vector<Vec3>& corners, int samples);
+  // A patch of several non-overlapping polygons in one plane, facing one way (elements grouped
+  // into one shooter, shooting_patches.h); the samples are shared out by area. Its normal is
+  // that of the largest polygon. Throws Error when their total area is zero.
+  PatchSampler(const std::vector<std::vector<Vec3>>& polygons, int samples);
 
-  const std::vector<Vec3>& corners() const { return corners_; }
+  // The patch's exact unoccluded form factor from a receiving point (form_factor.h).
+  const PatchFormFactor& unoccluded() const { return unoccluded_; }
   double area() const { return area_; }
+  double polygonArea(size_t polygon) const { return polygonAreas_[polygon]; }
   const Vec3& normal() const { return normal_; }
   size_t samples() const { return sampleCount_; }
   // Appends samples() jittered samples, one per grid cell of every piece.
@@ -47,13 +56,15 @@ class PatchSampler {
   struct Piece {
     Vec3 a, b, c, d;  // a triangle (a, b, c), or a bilinear quad (a, b, c, d) when `quad`
     bool quad = false;
+    uint32_t polygon = 0;
     int k = 1;           // k x k grid
     double weight = 0.0; // triangle: area / k^2 (the map below preserves area)
   };
-  std::vector<Vec3> corners_;
+  PatchFormFactor unoccluded_;
   std::vector<Piece> pieces_;
   Vec3 normal_{0.0};
   double area_ = 0.0;
+  std::vector<double> polygonAreas_;
   size_t sampleCount_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include "core/parallel_for.h"
 #include "geom/polygon.h"
 #include "solve/element_to_node.h"
+#include "solve/shooting_patches.h"
 
 #include <atomic>
 #include <chrono>
@@ -48,15 +49,31 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
     : settings_(settings), mesh_(validated(std::move(mesh))), refiner_(mesh_), rayCaster_(std::make_unique<RayCaster>(scene)) {
   for (const Polygon& polygon : scene.polygons) surfaceNormals_.push_back(unitNormal(polygon.vertices));
   sceneDiagonal_ = scene.bounds().diagonal();
+  // Every element is its own patch, or a group of elements is (the first one's material and
+  // surface, which the grouping shares).
+  std::vector<uint32_t> patchOf;
+  if (settings_.shooterSize > 0.0)
+    patchOf = groupIntoShootingPatches(scene, mesh_, settings_.shooterSize);
+  else
+    for (uint32_t e = 0; e < mesh_.elements.size(); ++e) patchOf.push_back(e);
+  std::vector<std::vector<std::vector<Vec3>>> outlines;
+  std::vector<uint32_t> first;
   for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
-    const Element& element = mesh_.elements[e];
+    if (patchOf[e] == outlines.size()) {
+      outlines.emplace_back();
+      first.push_back(e);
+    }
+    pieceOf_.push_back({patchOf[e], uint32_t(outlines[patchOf[e]].size())});
+    outlines[patchOf[e]].push_back(mesh_.cornerPositions(e));
+    elementArea_.push_back(area(outlines[patchOf[e]].back()));
+  }
+  for (size_t p = 0; p < outlines.size(); ++p) {
+    const Element& element = mesh_.elements[first[p]];
     const Material& material = mesh_.materials[element.material];
-    Patch patch{PatchSampler(mesh_.cornerPositions(e), settings_.samples), material.E, material.rho, material.E,
-                element.surface};
-    emittedPower_ += channelSum(material.E) * patch.sampler.area();
-    elementArea_.push_back(patch.sampler.area());
+    Patch patch{PatchSampler(outlines[p], settings_.samples), std::vector<Rgb>(outlines[p].size(), material.E),
+                material.rho, material.E, element.surface};
+    emittedPower_ += patch.unshotPower();
     patches_.push_back(std::move(patch));
-    patchOf_.push_back(e);
   }
   if (settings_.quadratic) refiner_.makeQuadratic(mesh_);
   H_.assign(mesh_.nodes.size(), Rgb(0.0));
@@ -66,6 +83,12 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
 }
 
 ProgressiveRefinement::~ProgressiveRefinement() = default;
+
+double ProgressiveRefinement::Patch::unshotPower() const {
+  double power = 0.0;
+  for (size_t p = 0; p < unshot.size(); ++p) power += channelSum(unshot[p]) * sampler.polygonArea(p);
+  return power;
+}
 
 // A node shared by elements of different surfaces (a mesh that welds across polygons) receives
 // as its first element's surface, as solveDirectIllumination does. It receives a little way
@@ -100,16 +123,15 @@ void ProgressiveRefinement::assignReceivers() {
   }
 }
 
-double ProgressiveRefinement::formFactor(size_t node, size_t shot, size_t& rays,
-                                         std::vector<AreaSample>& scratch) const {
+Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const {
   const Patch& shooter = patches_[history_[shot].patch];
   // A polygon does not light itself (it is planar): no rays for that.
-  if (nodeMaterial_[node] < 0 || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) return 0.0;
+  if (nodeMaterial_[node] < 0 || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) return Rgb(0.0);
   // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
-  return elementToNodeFormFactor({nodePoint_[node], nodeNormal_[node]}, shooter.sampler, stream,
-                                 rayCaster_.get(), rays, scratch);
+  return radiosityFromPatch({nodePoint_[node], nodeNormal_[node]}, shooter.sampler, history_[shot].deltaB, stream,
+                            rayCaster_.get(), rays, scratch);
 }
 
 bool ProgressiveRefinement::finished() const {
@@ -123,16 +145,16 @@ bool ProgressiveRefinement::step() {
   uint32_t shooter = 0;
   double most = -1.0;
   for (uint32_t p = 0; p < patches_.size(); ++p) {
-    const double power = channelSum(patches_[p].unshot) * patches_[p].sampler.area();
+    const double power = patches_[p].unshotPower();
     if (power > most) {
       most = power;
       shooter = p;
     }
   }
-  history_.push_back({shooter, patches_[shooter].unshot});
-  patches_[shooter].unshot = Rgb(0.0);
+  std::vector<Rgb>& unshot = patches_[shooter].unshot;
+  history_.push_back({shooter, unshot});
+  std::fill(unshot.begin(), unshot.end(), Rgb(0.0));
   const size_t shot = history_.size() - 1;
-  const Rgb deltaB = history_[shot].deltaB;
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Rgb> deltaH(mesh_.nodes.size(), Rgb(0.0));
@@ -142,7 +164,7 @@ bool ProgressiveRefinement::step() {
       [&](size_t node) {
         thread_local std::vector<AreaSample> scratch;
         size_t cast = 0;
-        deltaH[node] = deltaB * formFactor(node, shot, cast, scratch);
+        deltaH[node] = gathered(node, shot, cast, scratch);
         H_[node] += deltaH[node];
         rays += cast;
       },
@@ -150,16 +172,19 @@ bool ProgressiveRefinement::step() {
   progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress_.rays += rays;
 
-  // Cohen et al. 1986 substructuring: what the elements received, area-weighted, is their
-  // patch's new unshot radiosity (times rho). Serial, in element order: deterministic.
+  // Cohen et al. 1986 substructuring: what the elements received, area-weighted, is the new
+  // unshot radiosity (times rho) of the initial element they lie in. Serial, in element order:
+  // deterministic.
   for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
     const Element& element = mesh_.elements[e];
     Rgb sum(0.0);
     for (const auto* list : {&element.corners, &element.midEdge})
       for (uint32_t node : *list) sum += deltaH[node];
     const double count = double(element.corners.size() + element.midEdge.size());
-    Patch& patch = patches_[patchOf_[e]];
-    patch.unshot += patch.rho * (sum / count) * (elementArea_[e] / patch.sampler.area());
+    const Piece piece = pieceOf_[e];
+    Patch& patch = patches_[piece.patch];
+    patch.unshot[piece.polygon] +=
+        patch.rho * (sum / count) * (elementArea_[e] / patch.sampler.polygonArea(piece.polygon));
   }
   updateUnshotFraction();
   return true;
@@ -167,7 +192,7 @@ bool ProgressiveRefinement::step() {
 
 void ProgressiveRefinement::updateUnshotFraction() {
   double unshot = 0.0;
-  for (const Patch& patch : patches_) unshot += channelSum(patch.unshot) * patch.sampler.area();
+  for (const Patch& patch : patches_) unshot += patch.unshotPower();
   progress_.unshotFraction = emittedPower_ > 0.0 ? unshot / emittedPower_ : 0.0;
   progress_.shots = history_.size();
   progress_.elements = mesh_.elements.size();
@@ -184,8 +209,7 @@ void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
         const size_t node = firstNode + i;
         size_t cast = 0;
         Rgb H(0.0);
-        for (size_t shot = 0; shot < history_.size(); ++shot)
-          H += history_[shot].deltaB * formFactor(node, shot, cast, scratch);
+        for (size_t shot = 0; shot < history_.size(); ++shot) H += gathered(node, shot, cast, scratch);
         H_[node] = H;
         rays += cast;
       },
@@ -200,7 +224,7 @@ size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
   const size_t firstNode = mesh_.nodes.size();
   std::vector<uint32_t> parentOf;
   const size_t split = refiner_.split(mesh_, chosen, parentOf);
-  for (uint32_t parent : parentOf) patchOf_.push_back(patchOf_[parent]);
+  for (uint32_t parent : parentOf) pieceOf_.push_back(pieceOf_[parent]);
   elementArea_.resize(mesh_.elements.size());
   for (uint32_t e : chosen) elementArea_[e] = area(mesh_.cornerPositions(e));
   for (size_t e = elementArea_.size() - parentOf.size(); e < elementArea_.size(); ++e)
@@ -219,7 +243,7 @@ Rgb ProgressiveRefinement::ambient() const {
   Rgb unshot(0.0), rho(0.0);
   double total = 0.0;
   for (const Patch& patch : patches_) {
-    unshot += patch.unshot * patch.sampler.area();
+    for (size_t p = 0; p < patch.unshot.size(); ++p) unshot += patch.unshot[p] * patch.sampler.polygonArea(p);
     rho += patch.rho * patch.sampler.area();
     total += patch.sampler.area();
   }
@@ -243,7 +267,7 @@ EnergyBalance ProgressiveRefinement::energyBalance() const {
   EnergyBalance balance;
   for (const Patch& patch : patches_) {
     balance.emitted += patch.E * patch.sampler.area();
-    balance.unshot += patch.unshot * patch.sampler.area();
+    for (size_t p = 0; p < patch.unshot.size(); ++p) balance.unshot += patch.unshot[p] * patch.sampler.polygonArea(p);
   }
   for (size_t e = 0; e < mesh_.elements.size(); ++e) {
     const Element& element = mesh_.elements[e];

@@ -22,6 +22,9 @@ struct SolverSettings {
   double stopUnshotFraction = 0.01;    // stop once unshot power <= this * emitted power
   size_t maxShots = 100000;            // and after this many shots in any case
   bool quadratic = false;              // make the elements quadratic (mid-edge nodes) first
+  // > 0: the initial elements are grouped into shooting patches of about this size
+  // (shooting_patches.h), as a discontinuity mesh needs; 0: every initial element is a patch.
+  double shooterSize = 0.0;
 };
 
 struct SolveProgress {
@@ -44,8 +47,8 @@ struct EnergyBalance {
 class ProgressiveRefinement {
  public:
   // `mesh`: any valid radiosity mesh of `scene` (elements on the scene's polygons, the scene's
-  // materials), e.g. meshUniformly's or a discontinuity mesher's; its elements become the
-  // patches. Throws Error when the mesh fails validateMesh or has no element, when no element
+  // materials), e.g. meshUniformly's or a discontinuity mesher's; its elements, or groups of
+  // them (SolverSettings::shooterSize), become the patches. Throws Error when the mesh fails validateMesh or has no element, when no element
   // emits, or when a material's rho is not in [0, 1) or E is negative or not finite: rho = 1
   // would never absorb, so the solution would not converge.
   ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings);
@@ -72,19 +75,26 @@ class ProgressiveRefinement {
   size_t ignoredPolygons() const { return rayCaster_->skippedPolygons(); }
 
  private:
+  // A shooter: one element of the initial mesh, or a group of them (SolverSettings::
+  // shooterSize), each of which keeps its own unshot radiosity (radiosityFromPatch).
   struct Patch {
     PatchSampler sampler;
-    Rgb unshot{0.0};
+    std::vector<Rgb> unshot;  // per polygon of the sampler (initial element)
     Rgb rho{0.0}, E{0.0};
     int surface = -1;
+    double unshotPower() const;  // summed over R, G, B
   };
   struct Shot {
     uint32_t patch = 0;
-    Rgb deltaB{0.0};
+    std::vector<Rgb> deltaB;  // per polygon of the patch
+  };
+  // Where an element's received light goes: the polygon of a patch it lies in.
+  struct Piece {
+    uint32_t patch = 0, polygon = 0;
   };
 
   void assignReceivers();
-  double formFactor(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
+  Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
   void valueNewNodes(size_t firstNode);
   void updateUnshotFraction();
 
@@ -95,7 +105,7 @@ class ProgressiveRefinement {
   std::vector<Vec3> surfaceNormals_;  // of the scene's polygons
   double sceneDiagonal_ = 0.0;
   std::vector<Patch> patches_;
-  std::vector<uint32_t> patchOf_;     // per element
+  std::vector<Piece> pieceOf_;        // per element
   std::vector<double> elementArea_;   // per element
   // Per node, from the first element that uses it: the point and normal it receives at, its
   // scene polygon, its material (-1: no element uses it yet); and its gathered radiosity H, the

@@ -283,6 +283,36 @@ TEST(FormFactorTest, SplittingAPolygonAddsUp) {
   }
 }
 
+// A patch of several polygons: the outline sum where the receiver sees all of it, the clipped
+// polygons where its horizon cuts it; either way the sum of the polygons' own form factors.
+TEST(FormFactorTest, PatchOfPolygonsIsTheSumOfItsPolygons) {
+  Random random(7);
+  int cut = 0, whole = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const Vec3 centre(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    const std::vector<Vec3> polygon = random.polygon(centre, true);
+    // A fan of triangles from the centroid: every inner edge is shared by two of them.
+    const Vec3 middle = centroid(polygon);
+    std::vector<std::vector<Vec3>> fan;
+    for (size_t i = 0; i < polygon.size(); ++i) fan.push_back({middle, polygon[i], polygon[(i + 1) % polygon.size()]});
+    const PatchFormFactor patch(fan);
+    const Vec3 x =
+        centre + random.uniform(0.05, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
+    const Vec3 n = random.direction();
+    double sum = 0.0;
+    bool horizonCuts = false;
+    for (const auto& triangle : fan) {
+      sum += pointToPolygonFormFactor(x, n, triangle);
+      for (const Vec3& v : triangle) horizonCuts |= glm::dot(v - x, n) < 0.0;
+    }
+    (horizonCuts ? cut : whole) += 1;
+    EXPECT_NEAR(patch.from(x, n), sum, 1e-13) << describe(x, n, polygon);
+    EXPECT_NEAR(patch.from(x, n), pointToPolygonFormFactor(x, n, polygon), 1e-13) << describe(x, n, polygon);
+  }
+  EXPECT_GT(cut, 25);  // both ways of computing it were exercised
+  EXPECT_GT(whole, 25);
+}
+
 // A1 F(1->2) = A2 F(2->1): the point form factor integrated over each polygon.
 TEST(FormFactorTest, ReciprocityBetweenTwoPolygons) {
   const auto floor = rectangle({0, 0, 0}, {1, 0, 0}, {0, 1.5, 0});                           // faces +z
