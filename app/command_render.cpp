@@ -105,11 +105,16 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 }
 
 int runRender(const RenderOptions& options) {
+  if (options.display.method != kFinalGather && !options.gather.givenWithGlMethod.empty())
+    throw Error(options.gather.givenWithGlMethod + " needs --method final-gather");
   int width = 0, height = 0;
   parseSize(options.size, width, height);
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
-  renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
+  if (options.display.method == kFinalGather)
+    renderFinalGather(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
+  else
+    renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
   return 0;
 }
 

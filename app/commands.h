@@ -3,6 +3,7 @@
 // function that returns the exit status. Errors are thrown as radview::Error.
 #include "gl/mesh_renderer.h"
 
+#include <cstdint>
 #include <string>
 
 namespace radview {
@@ -30,12 +31,25 @@ struct DisplayOptions {
   double elementSize = 0.0;        // scenes only; 0 picks a default
 };
 
+// render --method final-gather (C&W §9.3.1).
+struct GatherOptions {
+  int spp = 16;                       // samples (passes) per pixel, 1 .. kMaxGatherSpp
+  uint64_t seed = 1;
+  std::string interpolant = "linear";  // B^ under the integral: an interp method name
+  int emitterSamples = 1;             // shadow rays per pixel per pass
+  std::string givenWithGlMethod;      // a gather option given without final-gather, for the error
+};
+constexpr const char* kFinalGather = "final-gather";  // the --method that renders by final gather
+constexpr int kMaxGatherSpp = 65536;
+constexpr int kMaxEmitterSamples = 1024;
+
 struct RenderOptions {
   std::string file;
   std::string out = "radview.png";
   std::string size = "1024x768";
   std::string linearOut;  // also write the linear radiosity (e.g. .exr), usable as a reference
   DisplayOptions display;
+  GatherOptions gather;
 };
 
 struct InfoOptions {
@@ -81,6 +95,12 @@ int parseTessellation(const std::string& text);
 // A difference view's statistics are printed after the path.
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out, const std::string& linearOut = "");
+
+// The final gather's image of the viewed file to a PNG at `out` (and its linear radiosity at
+// `linearOut`), with the display options' camera and exposure; prints the path and a summary.
+// Throws Error for a GL-only display option or a bad gather option.
+void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather,
+                       int width, int height, const std::string& out, const std::string& linearOut);
 
 // "1024x768" -> width, height. Throws Error.
 void parseSize(const std::string& text, int& width, int& height);

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 
@@ -20,11 +21,16 @@ namespace {
 using namespace radview;
 
 
-void addDisplayOptions(CLI::App& command, DisplayOptions& d) {
+// `methods`: the --method names the command accepts.
+void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
+  const bool finalGather = std::find(methods.begin(), methods.end(), kFinalGather) != methods.end();
   command.add_option("--method", d.method,
                      "Interpolant: flat, gouraud (hardware, on triangles), scanline-gouraud (on the polygons, as "
-                     "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher")
-      ->check(CLI::IsMember(gl::shadingMethodNames()))
+                     "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher" +
+                         std::string(finalGather ? "; or final-gather (C&W §9.3.1: eq. 9.9 per pixel by ray "
+                                                   "casting, the interpolant --gather-interpolant under the integral)"
+                                                 : ""))
+      ->check(CLI::IsMember(methods))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
                    "Gouraud linear in screen space, as scanline hardware did, not perspective-correct");
@@ -104,7 +110,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
   app.add_flag("--solve", viewer.solve,
                "Solve the scene in the background at once (as radview solve), showing it as it converges");
-  addDisplayOptions(app, viewer.display);
+  addDisplayOptions(app, viewer.display, gl::shadingMethodNames());
 
   RenderOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "Render FILE headless (EGL) to a PNG");
@@ -114,7 +120,22 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   renderCommand->add_option("--linear-out", render.linearOut,
                             "Also write the linear radiosity as a float image (.exr): a reference for --reference");
-  addDisplayOptions(*renderCommand, render.display);
+  std::vector<std::string> renderMethods = gl::shadingMethodNames();
+  renderMethods.push_back(kFinalGather);
+  addDisplayOptions(*renderCommand, render.display, renderMethods);
+  renderCommand->add_option("--spp", render.gather.spp,
+                            "final-gather: samples per pixel, 1.." + std::to_string(kMaxGatherSpp))
+      ->capture_default_str();
+  renderCommand->add_option("--seed", render.gather.seed, "final-gather: random seed (same seed, same image)")
+      ->capture_default_str();
+  renderCommand->add_option("--gather-interpolant", render.gather.interpolant,
+                            "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9")
+      ->check(CLI::IsMember(methodNames()))
+      ->capture_default_str();
+  renderCommand->add_option("--emitter-samples", render.gather.emitterSamples,
+                            "final-gather: shadow rays to the emitters per pixel per pass, 1.." +
+                                std::to_string(kMaxEmitterSamples))
+      ->capture_default_str();
 
   InfoOptions info;
   CLI::App* infoCommand = app.add_subcommand("info", "Print what FILE holds: polygons, emitters, mesh, T-vertices, "
@@ -159,6 +180,9 @@ int main(int argc, char** argv) {
   CLI::App* solveCommand = addSolveCommand(app, solve);
 
   CLI11_PARSE(app, argc, argv);
+  for (const char* name : {"--spp", "--seed", "--gather-interpolant", "--emitter-samples"})
+    if (render.gather.givenWithGlMethod.empty() && renderCommand->count(name) > 0)
+      render.gather.givenWithGlMethod = name;
   try {
     if (*renderCommand) return runRender(render);
     if (*infoCommand) return runInfo(info);

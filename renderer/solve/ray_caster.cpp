@@ -5,6 +5,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <limits>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -65,7 +66,8 @@ RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
   std::vector<float> vertices;
   std::vector<unsigned> indices;
   for (const Polygon& polygon : scene.polygons) {
-    if (unitNormal(polygon.vertices) == Vec3(0.0)) {
+    polygonNormals_.push_back(unitNormal(polygon.vertices));
+    if (polygonNormals_.back() == Vec3(0.0)) {
       ++skippedPolygons_;
       continue;
     }
@@ -74,8 +76,10 @@ RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
       const Vec3 q = (p - center_) * scale_;
       vertices.insert(vertices.end(), {float(q.x), float(q.y), float(q.z)});
     }
-    for (const auto& t : triangulatePolygon(polygon.vertices))
+    for (const auto& t : triangulatePolygon(polygon.vertices)) {
       indices.insert(indices.end(), {base + unsigned(t[0]), base + unsigned(t[1]), base + unsigned(t[2])});
+      trianglePolygon_.push_back(uint32_t(polygonNormals_.size() - 1));
+    }
   }
   triangleCount_ = indices.size() / 3;
 
@@ -137,6 +141,45 @@ bool RayCaster::occluded(const Segment& segment) const {
   rtcOccluded1(embree_->scene, &context, &ray);
   // Embree marks an occluded ray by setting tfar to -infinity.
   return ray.tfar < 0.0f;
+}
+
+}  // namespace radview
+
+namespace radview {
+
+std::optional<RayHit> RayCaster::closestHit(const Ray& ray) const {
+  // The direction is a unit vector in both frames (the map to Embree's is a uniform scale), so
+  // Embree's t is a distance in its frame: t / scale_ in the world.
+  const Vec3 from = (ray.origin - center_) * scale_ + kLift * ray.liftNormal;
+  RTCRayHit query;
+  query.ray.org_x = float(from.x), query.ray.org_y = float(from.y), query.ray.org_z = float(from.z);
+  query.ray.dir_x = float(ray.direction.x), query.ray.dir_y = float(ray.direction.y),
+  query.ray.dir_z = float(ray.direction.z);
+  query.ray.tnear = 0.0f;
+  query.ray.tfar = std::numeric_limits<float>::infinity();
+  query.ray.time = 0.0f;
+  query.ray.mask = ~0u;
+  query.ray.id = 0;
+  query.ray.flags = 0;
+  query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  query.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect1(embree_->scene, &context, &query);
+  if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+  RayHit hit;
+  hit.polygon = trianglePolygon_[query.hit.primID];
+  // The float ray, as Embree traced it, in double from here on.
+  const Vec3 origin(query.ray.org_x, query.ray.org_y, query.ray.org_z);
+  const Vec3 direction(query.ray.dir_x, query.ray.dir_y, query.ray.dir_z);
+  const double t = query.ray.tfar;
+  hit.position = (origin + t * direction) / scale_ + center_;
+  hit.distance = t / scale_;
+  // The side from our own double normal, not Embree's Ng, whose sign follows its own winding
+  // convention.
+  hit.front = glm::dot(polygonNormals_[hit.polygon], ray.direction) < 0.0;
+  return hit;
 }
 
 }  // namespace radview

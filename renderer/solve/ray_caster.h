@@ -1,11 +1,14 @@
 #pragma once
-// Visibility V(x, y) between two surface points (C&W eq. 4.3's V_ij), by rays cast through
-// Embree 3 against the scene's polygons.
+// Visibility V(x, y) between two surface points (C&W eq. 4.3's V_ij), and the surface a ray
+// sees first (the final gather, C&W §9.3.1), by rays cast through Embree 3 against the scene's
+// polygons.
 #include "core/types.h"
 #include "scene/scene.h"
 
 #include <cstddef>
 #include <memory>
+#include <optional>
+#include <vector>
 
 namespace radview {
 
@@ -14,6 +17,23 @@ namespace radview {
 struct Segment {
   Vec3 from, fromNormal;
   Vec3 to, toNormal;
+};
+
+// A ray leaving `origin` along the unit vector `direction`. A surface point's ray names the
+// unit normal of the side it leaves from as `liftNormal`, and is lifted off it as a Segment's
+// ends are; a ray from the eye has none (zero).
+struct Ray {
+  Vec3 origin;
+  Vec3 direction;
+  Vec3 liftNormal{0.0};
+};
+
+// The first surface a ray meets.
+struct RayHit {
+  size_t polygon = 0;     // index into the scene's polygons
+  Vec3 position{0.0};     // world space, on the polygon up to Embree's float rounding
+  double distance = 0.0;  // world space, from the (lifted) origin
+  bool front = false;     // the ray arrived on the side the polygon faces (its normal's side)
 };
 
 class RayCaster {
@@ -33,6 +53,9 @@ class RayCaster {
   // touches at a corner, counts as a blocker. Thread-safe: any number of threads may query.
   bool occluded(const Segment& segment) const;
 
+  // The nearest polygon along the ray, if any. Thread-safe.
+  std::optional<RayHit> closestHit(const Ray& ray) const;
+
   // The self-intersection offset, a fraction of the scene's bounding diagonal: above float's
   // rounding of the normalised coordinates (~6e-8), far below any element size.
   static constexpr double kLift = 1e-5;
@@ -51,6 +74,8 @@ class RayCaster {
   std::unique_ptr<Embree> embree_;
   Vec3 center_{0.0};
   double scale_ = 1.0;  // world -> Embree: (p - center_) * scale_
+  std::vector<uint32_t> trianglePolygon_;  // Embree's primitive ID -> scene polygon
+  std::vector<Vec3> polygonNormals_;       // unit, by scene polygon (zero for skipped ones)
   size_t triangleCount_ = 0;
   size_t skippedPolygons_ = 0;
 };

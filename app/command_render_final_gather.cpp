@@ -1,0 +1,100 @@
+// radview render --method final-gather: C&W §9.3.1's per-pixel evaluation of eq. 9.9, radview's
+// accuracy reference, written as the GL renders are (same camera, exposure and tone map), so
+// that its --linear-out is a --reference for --view difference of any GL method.
+#include "app/commands.h"
+#include "app/viewed_file.h"
+#include "core/camera.h"
+#include "core/display_transform.h"
+#include "core/error.h"
+#include "gather/final_gather.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <unistd.h>
+
+namespace radview {
+
+namespace {
+
+// The display options that only the GL renderer draws: each an error with final-gather rather
+// than silently ignored. The first one given, or nothing.
+std::string glOnlyOptionGiven(const DisplayOptions& d) {
+  const DisplayOptions defaults;
+  if (d.view != "normal") return "--view " + d.view;
+  if (d.screenSpace) return "--screen-space";
+  if (d.edges) return "--edges";
+  if (d.discontinuities) return "--discontinuities";
+  if (d.tVertices) return "--t-vertices";
+  if (d.repairTVertices) return "--repair-t-vertices";
+  if (d.splitLines) return "--split-lines";
+  if (d.tessellationTriangles) return "--tessellation-triangles";
+  if (d.surface != defaults.surface) return "--surface";
+  if (d.controlNet) return "--control-net";
+  if (d.tessellation != defaults.tessellation) return "--tessellation";
+  if (d.tolerance != defaults.tolerance) return "--tolerance";
+  if (!d.reference.empty()) return "--reference";
+  return "";
+}
+
+// The GL display pass's picture of a linear image (shaders/tonemap.frag): exposure and sRGB
+// where a surface is seen, the background colour where none is; a pixel partly covered blends
+// the two by its coverage (the gather antialiases, the GL renderer does not).
+Image displayedImage(const LinearImage& linear, double exposureScale) {
+  const gl::RenderSettings defaults;
+  const Rgb background(defaults.background);
+  Image image{linear.width, linear.height, std::vector<uint8_t>(linear.rgba.size())};
+  for (size_t i = 0; i < linear.rgba.size() / 4; ++i) {
+    const float* p = &linear.rgba[4 * i];
+    const double alpha = p[3];
+    const Rgb shown = alpha > 0.0 ? displayed(Rgb(p[0], p[1], p[2]), exposureScale) : Rgb(0.0);
+    const Rgb blended = alpha * shown + (1.0 - alpha) * background;
+    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = uint8_t(std::lround(255.0 * blended[c]));
+    image.rgba[4 * i + 3] = 255;
+  }
+  return image;
+}
+
+}  // namespace
+
+void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options,
+                       int width, int height, const std::string& out, const std::string& linearOut) {
+  const std::string glOnly = glOnlyOptionGiven(display);
+  if (!glOnly.empty()) throw Error(glOnly + ": a GL display option, not available with --method final-gather");
+  if (options.spp < 1 || options.spp > kMaxGatherSpp)
+    throw Error("--spp " + std::to_string(options.spp) + ": expected 1.." + std::to_string(kMaxGatherSpp) +
+                " samples per pixel");
+  if (options.emitterSamples < 1 || options.emitterSamples > kMaxEmitterSamples)
+    throw Error("--emitter-samples " + std::to_string(options.emitterSamples) + ": expected 1.." +
+                std::to_string(kMaxEmitterSamples));
+
+  GatherSettings settings;
+  settings.interpolant = methodFromName(options.interpolant);
+  settings.interpolantOptions.cloughTocher = cloughTocherVariantFromName(display.variant);
+  settings.seed = options.seed;
+  settings.width = width;
+  settings.height = height;
+  settings.camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
+  settings.emitterSamples = options.emitterSamples;
+  const auto start = std::chrono::steady_clock::now();
+  FinalGather gather(viewed.mesh, settings);
+  const bool progress = isatty(fileno(stderr));
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  while (gather.samplesPerPixel() < options.spp) {
+    gather.addPasses(1);
+    if (progress) std::fprintf(stderr, "\rfinal gather: %d/%d spp, %.1f s", gather.samplesPerPixel(), options.spp, seconds());
+  }
+  if (progress) std::fprintf(stderr, "\n");
+  const double elapsed = seconds();
+
+  const LinearImage image = gather.image();
+  writePng(displayedImage(image, std::exp2(display.exposure)), out);
+  if (!linearOut.empty()) writeLinearImage(image, linearOut);
+  std::printf("%s\n", out.c_str());
+  std::printf("final gather: %d spp, %dx%d, B^ %s, seed %llu: %.2f s (setup included), %.3g M rays, %.3g M rays/s\n",
+              gather.samplesPerPixel(), width, height, options.interpolant.c_str(),
+              static_cast<unsigned long long>(options.seed), elapsed, double(gather.raysCast()) * 1e-6,
+              double(gather.raysCast()) * 1e-6 / elapsed);
+}
+
+}  // namespace radview

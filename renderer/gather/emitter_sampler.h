@@ -1,0 +1,42 @@
+#pragma once
+// Explicit sampling of the emitters for the direct part of the final gather (C&W §9.3.1): the
+// direct light carries the sharpest shadows, so it is sampled by area on the emitters rather
+// than found by chance through hemisphere directions.
+#include "mesh/radiosity_mesh.h"
+
+#include <vector>
+
+namespace radview {
+
+// A point on an emitting element.
+struct EmitterSample {
+  Vec3 position{0.0};
+  Vec3 normal{0.0};  // the emitter's unit normal: it emits on this side only
+  Rgb E{0.0};
+  // Density of this sample per unit area: an emitter is chosen with probability proportional to
+  // its power (area x mean of E's channels), then a point uniformly on it, so pdf = meanE_e /
+  // sum over emitters of (A x meanE).
+  double pdfArea = 0.0;
+};
+
+class EmitterSampler {
+ public:
+  // The mesh's elements whose material emits; zero-area ones are left out (they emit nothing).
+  explicit EmitterSampler(const RadiosityMesh& mesh);
+
+  bool empty() const { return triangles_.empty(); }
+  // Three uniforms in [0, 1): the first picks the emitter (and the triangle of it), the other
+  // two the point on that triangle. Precondition: !empty().
+  EmitterSample sample(double uPick, double u1, double u2) const;
+
+ private:
+  struct Triangle {
+    Vec3 a, b, c, normal;
+    Rgb E;
+    double pdfArea;
+  };
+  std::vector<Triangle> triangles_;
+  std::vector<double> cumulative_;  // running sum of the triangles' probabilities, the last 1
+};
+
+}  // namespace radview

@@ -1,0 +1,145 @@
+#include "gather/final_gather.h"
+
+#include "core/error.h"
+#include "core/parallel_for.h"
+#include "gather/hemisphere_sampling.h"
+
+#include <string>
+
+namespace radview {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The elements as the ray caster's polygons, in element order: they tile the surfaces exactly,
+// T-vertices included (a T-vertex lies on its neighbour's edge), so the rays see no cracks.
+Scene elementScene(const RadiosityMesh& mesh) {
+  Scene scene;
+  scene.materials = mesh.materials;
+  scene.polygons.reserve(mesh.elements.size());
+  for (size_t e = 0; e < mesh.elements.size(); ++e)
+    scene.polygons.push_back({mesh.cornerPositions(e), mesh.elements[e].material});
+  return scene;
+}
+
+GatherSettings checked(const GatherSettings& settings) {
+  if (settings.width < 1 || settings.height < 1)
+    throw Error("final gather: the image size " + std::to_string(settings.width) + "x" +
+                std::to_string(settings.height) + " is empty");
+  if (settings.emitterSamples < 1)
+    throw Error("final gather: " + std::to_string(settings.emitterSamples) + " emitter samples: expected 1 or more");
+  return settings;
+}
+
+}  // namespace
+
+FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings)
+    : mesh_(mesh),
+      settings_(checked(settings)),
+      interpolant_(makeInterpolant(mesh, settings.interpolant, settings.interpolantOptions)),
+      caster_(std::make_unique<RayCaster>(elementScene(mesh))),
+      emitters_(mesh),
+      cameraRays_(settings.camera, settings.width, settings.height),
+      sum_(size_t(settings.width) * size_t(settings.height) * 4, 0.0),
+      pass_(size_t(settings.width) * size_t(settings.height)) {
+  normals_.reserve(mesh.elements.size());
+  for (size_t e = 0; e < mesh.elements.size(); ++e) normals_.push_back(mesh.elementNormal(e));
+}
+
+// C&W eq. 9.9's integral over the emitters' own radiosity E: sampled by area on them.
+Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const {
+  if (emitters_.empty()) return Rgb(0.0);
+  Rgb sum(0.0);
+  for (int k = 0; k < settings_.emitterSamples; ++k) {
+    const double uPick = stream.uniform(), u1 = stream.uniform(), u2 = stream.uniform();
+    const EmitterSample s = emitters_.sample(uPick, u1, u2);
+    const Vec3 d = s.position - x;
+    const double r2 = glm::dot(d, d);
+    if (!(r2 > 0.0)) continue;
+    const Vec3 w = d / std::sqrt(r2);
+    const double cosP = glm::dot(n, w), cosE = -glm::dot(s.normal, w);
+    // Below x_p's horizon, or the emitter's back (it emits on its front only): G = 0.
+    if (cosP <= 0.0 || cosE <= 0.0) continue;
+    ++rays;
+    if (caster_->occluded({x, n, s.position, s.normal})) continue;
+    sum += s.E * (cosP * cosE / (kPi * r2 * s.pdfArea));
+  }
+  return sum / double(settings_.emitterSamples);
+}
+
+// The rest of eq. 9.9's integral, B^ - E over the surfaces, by one cosine-weighted direction:
+// with pdf cos(theta) / pi, G dA' = cos(theta) / pi dw cancels to B^(x') - E(x').
+Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const {
+  const double u1 = stream.uniform(), u2 = stream.uniform();
+  ++rays;
+  const std::optional<RayHit> hit = caster_->closestHit({x, cosineWeightedDirection(n, u1, u2), n});
+  if (!hit || !hit->front) return Rgb(0.0);
+  const uint32_t element = uint32_t(hit->polygon);
+  const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
+  return interpolant_->evaluate(element, hit->position).B - material.E;
+}
+
+PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
+  const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
+  SampleStream stream = SampleStream::forKey(settings_.seed, pixel, uint64_t(pass));
+  PixelSample result;
+  const double jitterX = stream.uniform(), jitterY = stream.uniform();
+  ++result.rays;
+  const std::optional<RayHit> seen = caster_->closestHit(cameraRays_.through(x + jitterX, y + jitterY));
+  if (!seen) return result;
+  result.covered = true;
+  const uint32_t element = uint32_t(seen->polygon);
+  if (!seen->front) {
+    result.B = interpolant_->evaluate(element, seen->position).B;
+    return result;
+  }
+  // C&W eq. 9.9.
+  const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
+  const Vec3& n = normals_[element];
+  const Rgb gathered = directLight(seen->position, n, stream, result.rays) +
+                       indirectLight(seen->position, n, stream, result.rays);
+  result.B = material.E + material.rho * gathered;
+  return result;
+}
+
+int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
+  auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
+  const int width = settings_.width;
+  for (int p = 0; p < passes; ++p) {
+    parallelFor(
+        size_t(settings_.height),
+        [&](size_t y) {
+          if (cancelled()) return;
+          for (int x = 0; x < width; ++x) pass_[y * size_t(width) + size_t(x)] = samplePixel(x, int(y), passes_);
+        },
+        1);
+    if (cancelled()) return p;
+    // Added in pixel order after the pass, so the sums do not depend on the threads either.
+    for (size_t i = 0; i < pass_.size(); ++i) {
+      if (pass_[i].covered) {
+        sum_[4 * i + 0] += pass_[i].B.r;
+        sum_[4 * i + 1] += pass_[i].B.g;
+        sum_[4 * i + 2] += pass_[i].B.b;
+        sum_[4 * i + 3] += 1.0;
+      }
+      rays_ += pass_[i].rays;
+    }
+    ++passes_;
+  }
+  return passes;
+}
+
+LinearImage FinalGather::image() const {
+  LinearImage image{settings_.width, settings_.height, std::vector<float>(sum_.size(), 0.0f)};
+  if (passes_ == 0) return image;
+  for (size_t i = 0; i < sum_.size() / 4; ++i) {
+    const double covered = sum_[4 * i + 3];
+    if (covered == 0.0) continue;
+    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = float(sum_[4 * i + size_t(c)] / covered);
+    image.rgba[4 * i + 3] = float(covered / passes_);
+  }
+  return image;
+}
+
+}  // namespace radview

@@ -1,0 +1,105 @@
+#pragma once
+// The two-pass method's second pass (C&W §9.3.1, eq. 9.9): for the point x_p seen through each
+// pixel,
+//   B(x_p) = E(x_p) + rho(x_p) * integral over the surfaces of B^(x') G(x_p, x') dA',
+// with B^ the radiosity solution reconstructed by one of the interpolants of §9.2 and G
+// including visibility, estimated by Monte Carlo with rays cast through Embree. The last bounce,
+// and with it every shadow, is resolved at image resolution: radview's accuracy reference for
+// what the interpolants show directly.
+//
+// The estimator, per pixel and pass (one sample per pixel per pass):
+//  - the eye ray through a uniformly jittered point of the pixel (so the mean antialiases;
+//    alpha is the fraction of samples that see a surface);
+//  - direct light: emitterSamples points on the emitters (EmitterSampler, by power, one-sided),
+//    E_e cos(theta_p) cos(theta_e) / (pi r^2) V / pdf each;
+//  - indirect light: one cosine-weighted direction, contributing B^(x') - E(x') at the surface
+//    it meets (the pdf cos / pi cancels G's cos / pi). Emission is left out there because the
+//    emitters are sampled explicitly: counting it twice would double the direct light.
+//
+// Decisions where the book is silent:
+//  - Surfaces are one-sided, as the solver treats them (a polygon seen from behind has form
+//    factor 0): an indirect ray that meets a back face gathers nothing from it (and stops
+//    there), and emitters emit on their front side only.
+//  - An eye ray that sees a back face shows B^ there, not gathered: the solution holds no
+//    radiosity for the back side, and B^ is what the GL renderer draws on both sides (it does
+//    not cull), so the two images stay comparable everywhere.
+//  - E(x_p) is the material's emission, added exactly (an emitter's own pixels are its E plus
+//    the light it reflects).
+//  - B^ is not clamped at zero where a higher-order interpolant overshoots below it: eq. 9.9
+//    integrates B^ as it is, and overshoot comes in pairs (below zero beside a peak above the
+//    data), so clamping only the negative side would add energy and bias the reference.
+//
+// Random numbers come from SampleStream::forKey(seed, pixel, pass): each pixel's samples do
+// not depend on which thread takes them, so the image is bit-identical for any thread count.
+#include "core/camera.h"
+#include "core/image.h"
+#include "gather/camera_rays.h"
+#include "gather/emitter_sampler.h"
+#include "interp/interpolant.h"
+#include "mesh/radiosity_mesh.h"
+#include "solve/patch_sampler.h"
+#include "solve/ray_caster.h"
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace radview {
+
+struct GatherSettings {
+  Method interpolant = Method::Linear;  // B^ under the integral
+  InterpolantOptions interpolantOptions;
+  uint64_t seed = 1;
+  int width = 256, height = 256;
+  Camera camera;
+  int emitterSamples = 1;  // shadow rays per pixel per pass
+};
+
+// One sample of one pixel: B at the surface seen, or nothing seen.
+struct PixelSample {
+  Rgb B{0.0};
+  bool covered = false;
+  uint32_t rays = 0;  // rays cast for it
+};
+
+class FinalGather {
+ public:
+  // The mesh must outlive the gather. Throws Error for a size below 1x1, emitterSamples below 1,
+  // or an interpolant the mesh cannot support.
+  FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings);
+
+  // Adds up to `passes` passes of one sample per pixel, on all cores, and returns how many were
+  // added. When `cancel` becomes true the pass under way is dropped (the image keeps whole
+  // passes only) and fewer are returned. One thread at a time may call the non-const members.
+  int addPasses(int passes, const std::atomic<bool>* cancel = nullptr);
+
+  int samplesPerPixel() const { return passes_; }
+  uint64_t raysCast() const { return rays_; }
+  const GatherSettings& settings() const { return settings_; }
+
+  // The mean so far: RGB the mean B over the samples that saw a surface (not premultiplied, as
+  // the GL renderer's linear image), alpha the fraction of samples that saw one. Row 0 is the top.
+  LinearImage image() const;
+
+  // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
+  PixelSample samplePixel(int x, int y, int pass) const;
+
+ private:
+  Rgb directLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const;
+  Rgb indirectLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const;
+
+  const RadiosityMesh& mesh_;
+  GatherSettings settings_;
+  std::unique_ptr<Interpolant> interpolant_;
+  std::unique_ptr<RayCaster> caster_;  // over the mesh's elements: polygon i is element i
+  std::vector<Vec3> normals_;          // unit normal of each element
+  EmitterSampler emitters_;
+  CameraRays cameraRays_;
+  std::vector<double> sum_;  // per pixel: sum of B over covered samples (RGB), covered count
+  std::vector<PixelSample> pass_;
+  int passes_ = 0;
+  uint64_t rays_ = 0;
+};
+
+}  // namespace radview

@@ -1,0 +1,234 @@
+#include "gather/final_gather.h"
+
+#include "core/error.h"
+#include "gather_scenes.h"
+#include "solve/form_factor.h"
+#include "tests/solve/solver_scenes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace radview {
+namespace {
+
+// Looks at the receiver obliquely from below the emitter's height, so that most pixels see
+// the receiver and some the emitter's face.
+GatherSettings receiverView(int width, int height) {
+  GatherSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.camera.eye = {0.0, -3.5, 0.6};
+  settings.camera.target = {0.0, 0.0, 0.0};
+  settings.camera.up = {0.0, 0.0, 1.0};
+  settings.camera.yfov = glm::radians(45.0);
+  return settings;
+}
+
+// rho E F(x -> emitter) averaged over a 4 x 4 grid of the pixel (the jittered eye rays'
+// expectation, to far below the noise), or a negative value where part of the pixel does not
+// see the receiver.
+std::vector<double> expectedReceiverRadiosity(const GatherSettings& settings) {
+  const Scene scene = test::receiverUnderSquareEmitter();
+  const CameraRays rays(settings.camera, settings.width, settings.height);
+  const double rhoE = scene.materials[0].rho.r * scene.materials[1].E.r;
+  std::vector<double> expected(size_t(settings.width) * size_t(settings.height), -1.0);
+  for (int y = 0; y < settings.height; ++y)
+    for (int x = 0; x < settings.width; ++x) {
+      double sum = 0.0;
+      bool receiver = true;
+      for (int k = 0; k < 25 && receiver; ++k) {
+        const int i = k % 5, j = k / 5;  // the pixel's corners and a 4 x 4 grid inside
+        const Ray ray = rays.through(x + i / 4.0, y + j / 4.0);
+        const double t = -ray.origin.z / ray.direction.z;
+        const Vec3 p = ray.origin + t * ray.direction;
+        // Within the receiver, and not behind the emitter (seen from the eye, the emitter's
+        // face hides the receiver where the ray crosses z = 1 inside it first).
+        const double tEmitter = (1.0 - ray.origin.z) / ray.direction.z;
+        const Vec3 q = ray.origin + tEmitter * ray.direction;
+        const bool hidden = tEmitter > 0 && tEmitter < t && std::abs(q.x) <= 0.5 && std::abs(q.y) <= 0.5;
+        receiver = t > 0 && std::abs(p.x) < 2 && std::abs(p.y) < 2 && !hidden;
+        if (i > 0 && j > 0 && i < 5 && j < 5 && receiver)
+          sum += rhoE * pointToPolygonFormFactor(p, {0, 0, 1}, scene.polygons[1].vertices);
+      }
+      if (receiver) expected[size_t(y) * size_t(settings.width) + size_t(x)] = sum / 16.0;
+    }
+  return expected;
+}
+
+struct ErrorFigures {
+  double rmse = 0.0, meanSigned = 0.0, meanExpected = 0.0;
+  size_t pixels = 0;
+};
+
+ErrorFigures errorAgainst(const LinearImage& image, const std::vector<double>& expected) {
+  ErrorFigures f;
+  double squared = 0.0;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    if (expected[i] < 0.0) continue;
+    const double d = image.rgba[4 * i] - expected[i];
+    squared += d * d;
+    f.meanSigned += d;
+    f.meanExpected += expected[i];
+    ++f.pixels;
+  }
+  f.rmse = std::sqrt(squared / double(f.pixels));
+  f.meanSigned /= double(f.pixels);
+  f.meanExpected /= double(f.pixels);
+  return f;
+}
+
+TEST(FinalGatherTest, ReceiverUnderASquareEmitterConvergesToTheExactFormFactorAtTheMonteCarloRate) {
+  const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
+  const GatherSettings settings = receiverView(64, 64);
+  const std::vector<double> expected = expectedReceiverRadiosity(settings);
+  FinalGather gather(mesh, settings);
+  std::vector<ErrorFigures> figures;
+  for (int spp : {1, 4, 16, 64}) {
+    gather.addPasses(spp - gather.samplesPerPixel());
+    ASSERT_EQ(gather.samplesPerPixel(), spp);
+    figures.push_back(errorAgainst(gather.image(), expected));
+    const ErrorFigures& f = figures.back();
+    std::printf("receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error %+.6f, "
+                "%zu pixels\n",
+                spp, f.rmse, 100.0 * f.rmse / f.meanExpected, f.meanExpected, f.meanSigned, f.pixels);
+  }
+  ASSERT_GT(figures[0].pixels, 1000u);  // a third of the image is receiver, fully
+  // Error ~ N^-1/2: a factor 2 per 4x samples. Bounds allow 25% either way on the factor
+  // (a bias floor or a wrong estimator, e.g. samples reused between passes, fails them).
+  for (int k = 1; k < 4; ++k) {
+    EXPECT_LT(figures[size_t(k)].rmse, 0.5 * 1.25 * figures[size_t(k) - 1].rmse) << k;
+    EXPECT_GT(figures[size_t(k)].rmse, 0.5 * 0.75 * figures[size_t(k) - 1].rmse) << k;
+  }
+  // Unbiased: the mean error over the pixels is within 4 standard errors of 0 (and a wrong pdf,
+  // e.g. a missing 1/pi, is off by far more than that).
+  const ErrorFigures& last = figures.back();
+  EXPECT_LT(std::abs(last.meanSigned), 4.0 * last.rmse / std::sqrt(double(last.pixels)));
+  EXPECT_LT(std::abs(last.meanSigned), 0.002 * last.meanExpected);
+}
+
+TEST(FinalGatherTest, FurnaceGivesEOverOneMinusRho) {
+  // A closed box, every surface rho 0.5 and E 1, B^ = E / (1 - rho) = 2 everywhere. The
+  // gather's direct part sees E over the whole hemisphere (F sums to 1) and its indirect part
+  // B^ - E = 1 in every direction: E + rho (E + rho E / (1 - rho)) = E / (1 - rho).
+  const Rgb rho(0.5, 0.25, 0.75), E(1.0, 2.0, 0.5);
+  const Rgb exact = E / (Rgb(1.0) - rho);
+  RadiosityMesh mesh = meshUniformly(test::furnaceBox(rho, E), 0.25);
+  for (Node& node : mesh.nodes) node.B = exact;
+  for (Method method : {Method::Flat, Method::Linear, Method::CloughTocher}) {
+    GatherSettings settings;
+    settings.interpolant = method;
+    settings.width = settings.height = 48;
+    settings.camera.eye = {0.5, 0.5, 0.95};
+    settings.camera.target = {0.3, 0.4, 0.0};
+    settings.camera.yfov = glm::radians(100.0);
+    FinalGather gather(mesh, settings);
+    gather.addPasses(32);
+    const LinearImage image = gather.image();
+    Rgb mean(0.0);
+    std::vector<double> errors;  // relative, per pixel, the largest channel
+    const size_t pixels = size_t(settings.width) * size_t(settings.height);
+    for (size_t i = 0; i < pixels; ++i) {
+      ASSERT_EQ(image.rgba[4 * i + 3], 1.0f) << "pixel " << i << " sees no surface inside the closed box";
+      const Rgb B(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2]);
+      mean += B / double(pixels);
+      const Rgb relative = glm::abs(B - exact) / exact;
+      errors.push_back(std::max({relative.r, relative.g, relative.b}));
+    }
+    // Pixels next to the box's edges see the adjacent wall's emission at r -> 0: area sampling
+    // has unbounded variance there, so the spread is judged by quantiles, not an RMSE.
+    std::sort(errors.begin(), errors.end());
+    const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
+    std::printf("furnace, %s B^, 32 spp: mean %.5f %.5f %.5f (exact %.5f %.5f %.5f), relative error median %.2f%%, "
+                "90th percentile %.2f%%\n",
+                methodNames()[size_t(method)].c_str(), mean.r, mean.g, mean.b, exact.r, exact.g, exact.b,
+                100.0 * median, 100.0 * p90);
+    // The standard error of the mean is the RMSE / 48, about 0.2%: 1% is 5 of them.
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], exact[c], 0.01 * exact[c]) << methodNames()[size_t(method)];
+    EXPECT_LT(median, 0.08) << methodNames()[size_t(method)];
+    EXPECT_LT(p90, 0.2) << methodNames()[size_t(method)];
+  }
+}
+
+TEST(FinalGatherTest, SameSeedGivesTheSameImageBitForBitWhateverTheThreads) {
+  const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
+  GatherSettings settings = receiverView(40, 30);
+  settings.seed = 7;
+  settings.emitterSamples = 2;
+  FinalGather a(mesh, settings), b(mesh, settings);
+  a.addPasses(3);
+  b.addPasses(1);
+  b.addPasses(2);
+  const LinearImage imageA = a.image(), imageB = b.image();
+  ASSERT_EQ(imageA.rgba.size(), imageB.rgba.size());
+  EXPECT_EQ(std::memcmp(imageA.rgba.data(), imageB.rgba.data(), imageA.rgba.size() * sizeof(float)), 0);
+  EXPECT_EQ(a.raysCast(), b.raysCast());
+
+  // One thread: every sample taken in order on this thread, summed as a pass sums them.
+  std::vector<double> sum(size_t(settings.width) * size_t(settings.height) * 4, 0.0);
+  for (int pass = 0; pass < 3; ++pass)
+    for (int y = 0; y < settings.height; ++y)
+      for (int x = 0; x < settings.width; ++x) {
+        const PixelSample s = a.samplePixel(x, y, pass);
+        if (!s.covered) continue;
+        const size_t i = size_t(y) * size_t(settings.width) + size_t(x);
+        for (int c = 0; c < 3; ++c) sum[4 * i + size_t(c)] += s.B[c];
+        sum[4 * i + 3] += 1.0;
+      }
+  size_t mismatches = 0;
+  for (size_t i = 0; i < sum.size() / 4; ++i) {
+    for (int c = 0; c < 3; ++c)
+      if (sum[4 * i + 3] > 0 && imageA.rgba[4 * i + size_t(c)] != float(sum[4 * i + size_t(c)] / sum[4 * i + 3]))
+        ++mismatches;
+    if (imageA.rgba[4 * i + 3] != float(sum[4 * i + 3] / 3.0)) ++mismatches;
+  }
+  EXPECT_EQ(mismatches, 0u);
+
+  settings.seed = 8;
+  FinalGather c(mesh, settings);
+  c.addPasses(3);
+  EXPECT_NE(std::memcmp(imageA.rgba.data(), c.image().rgba.data(), imageA.rgba.size() * sizeof(float)), 0);
+}
+
+TEST(FinalGatherTest, CancelledPassIsDropped) {
+  const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
+  FinalGather gather(mesh, receiverView(16, 16));
+  std::atomic<bool> cancel{true};
+  EXPECT_EQ(gather.addPasses(4, &cancel), 0);
+  EXPECT_EQ(gather.samplesPerPixel(), 0);
+  cancel = false;
+  EXPECT_EQ(gather.addPasses(2, &cancel), 2);
+  EXPECT_EQ(gather.samplesPerPixel(), 2);
+}
+
+TEST(FinalGatherTest, BackFacesShowTheInterpolatedSolutionAsTheGlRendererDoes) {
+  // From above, the emitter's back face hides the receiver's centre: it shows B^ = E there.
+  const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
+  GatherSettings settings;
+  settings.width = settings.height = 9;
+  settings.camera.eye = {0.0, 0.0, 3.0};
+  settings.camera.target = {0.0, 0.0, 0.0};
+  settings.camera.yfov = glm::radians(10.0);
+  FinalGather gather(mesh, settings);
+  gather.addPasses(2);
+  const LinearImage image = gather.image();
+  for (size_t i = 0; i < 81; ++i) {
+    EXPECT_EQ(image.rgba[4 * i], 1.0f) << i;
+    EXPECT_EQ(image.rgba[4 * i + 3], 1.0f) << i;
+  }
+}
+
+TEST(FinalGatherTest, RejectsBadSettings) {
+  const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
+  GatherSettings settings = receiverView(0, 10);
+  EXPECT_THROW(FinalGather(mesh, settings), Error);
+  settings = receiverView(10, 10);
+  settings.emitterSamples = 0;
+  EXPECT_THROW(FinalGather(mesh, settings), Error);
+}
+
+}  // namespace
+}  // namespace radview
