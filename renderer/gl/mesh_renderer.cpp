@@ -55,6 +55,27 @@ std::vector<T> readPixels(GLuint framebuffer, GLenum colorBuffer, int width, int
   return rows;
 }
 
+// A texture of a linear image (RGBA32F, nearest texel), its rows turned bottom-up as OpenGL's
+// run. Throws Error naming `source` for a size this OpenGL cannot hold.
+GLuint linearTexture(const LinearImage& image, const std::string& source) {
+  GLint maxSize = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
+    throw Error(source, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                            ", outside this OpenGL's 1.." + std::to_string(maxSize));
+  std::vector<float> rows(image.rgba.size());
+  const size_t row = size_t(image.width) * 4;
+  for (int y = 0; y < image.height; ++y)
+    std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &rows[size_t(y) * row]);
+  GLuint texture = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  glTextureStorage2D(texture, 1, GL_RGBA32F, image.width, image.height);
+  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureSubImage2D(texture, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rows.data());
+  return texture;
+}
+
 }  // namespace
 
 namespace {
@@ -114,6 +135,7 @@ MeshRenderer::~MeshRenderer() {
   glDeleteBuffers(8, buffers);
   glDeleteQueries(2, timerQueries_.data());
   if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
+  clearShownImage();
 }
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
@@ -284,6 +306,12 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   RenderSettings settings = requested;
   // A difference compares the same surfaces: the raised radiosity surface has no counterpart.
   if (settings.view == DisplayView::Difference) settings.surfaceHeight = 0.0;
+  // A shown image needs only the surfaces' depth from pass 1: the cheapest method draws it,
+  // on the flat surfaces the image was made of.
+  if (hasShownImage()) {
+    settings.method = ShadingMethod::Flat;
+    settings.surfaceHeight = 0.0;
+  }
   const bool compareMethod =
       settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Method;
   const bool compareImage =
@@ -338,6 +366,9 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
   drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height);
+  if (hasShownImage())
+    glBlitNamedFramebuffer(shownFbo_, targets_.linearFramebuffer(), 0, 0, shownWidth_, shownHeight_, 0, 0, width,
+                           height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 
   // Pass 2: tone map into the display target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
@@ -432,25 +463,27 @@ Image MeshRenderer::readDisplay() const {
 }
 
 void MeshRenderer::setReferenceImage(const ReferenceImage& reference) {
+  const GLuint texture = linearTexture(reference.pixels, reference.path);
   if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
-  referenceTexture_ = 0;
-  const LinearImage& image = reference.pixels;
-  // OpenGL's rows run bottom-up.
-  std::vector<float> rows(image.rgba.size());
-  const size_t row = size_t(image.width) * 4;
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &rows[size_t(y) * row]);
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
-    throw Error(reference.path, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                                    ", outside this OpenGL's 1.." + std::to_string(maxSize));
-  glCreateTextures(GL_TEXTURE_2D, 1, &referenceTexture_);
-  glTextureStorage2D(referenceTexture_, 1, GL_RGBA32F, image.width, image.height);
-  glTextureParameteri(referenceTexture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(referenceTexture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureSubImage2D(referenceTexture_, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rows.data());
+  referenceTexture_ = texture;
   reference_ = reference;
+}
+
+void MeshRenderer::setShownImage(const LinearImage& image) {
+  const GLuint texture = linearTexture(image, "the shown image");
+  clearShownImage();
+  shownTexture_ = texture;
+  glCreateFramebuffers(1, &shownFbo_);
+  glNamedFramebufferTexture(shownFbo_, GL_COLOR_ATTACHMENT0, shownTexture_, 0);
+  shownWidth_ = image.width;
+  shownHeight_ = image.height;
+}
+
+void MeshRenderer::clearShownImage() {
+  if (shownFbo_) glDeleteFramebuffers(1, &shownFbo_);
+  if (shownTexture_) glDeleteTextures(1, &shownTexture_);
+  shownFbo_ = shownTexture_ = 0;
+  shownWidth_ = shownHeight_ = 0;
 }
 
 ReferenceImage MeshRenderer::readComparison() const {

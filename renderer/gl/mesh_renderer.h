@@ -1,9 +1,9 @@
 #pragma once
 // Draws a radiosity mesh with any interpolant of C&W §9.2: flat, Gouraud on triangles
 // (perspective-correct or screen-space), scanline Gouraud on the element polygons (fig. 9.7),
-// and bilinear, quadratic, C1 quadratic and Clough-Tocher evaluated exactly per pixel; exposure
-// and sRGB tone mapping; the element-edge overlay. Needs a current OpenGL 4.5
-// core context (EglContext, or the viewer's window).
+// and bilinear, quadratic, C1 quadratic and Clough-Tocher evaluated exactly per pixel, or a
+// linear image in their place (a final gather); exposure and sRGB tone mapping; the element-edge
+// overlay. Needs a current OpenGL 4.5 core context (EglContext, or the viewer's window).
 #include "core/camera.h"
 #include "core/image.h"
 #include "gl/bezier_pass.h"
@@ -96,6 +96,16 @@ class MeshRenderer {
   void setReferenceImage(const ReferenceImage& reference);
   bool hasReferenceImage() const { return referenceTexture_ != 0; }
 
+  // An image shown in place of the mesh's interpolated radiosity (the viewer's final gather,
+  // C&W §9.3.1) until clearShownImage: linear, row 0 the top, alpha coverage, any size (stretched
+  // to the render's, nearest texel). Pass 1 still draws the mesh, flat, for the depth the
+  // overlays are tested against; then the image replaces its colour, and the tone map, the views
+  // and the overlays treat it as they treat a method's render. Throws Error for a size this
+  // OpenGL cannot hold.
+  void setShownImage(const LinearImage& image);
+  void clearShownImage();
+  bool hasShownImage() const { return shownTexture_ != 0; }
+
   Image readDisplay() const;
   LinearImage readLinear() const;
   // What the last difference view compared with, as a reference for displayDifference: the
@@ -143,6 +153,8 @@ class MeshRenderer {
   BezierPass comparisonPass_;
   int comparisonPatchesFor_ = -1;
   GLuint referenceTexture_ = 0;
+  GLuint shownTexture_ = 0, shownFbo_ = 0;  // setShownImage's, and a framebuffer to blit it from
+  int shownWidth_ = 0, shownHeight_ = 0;
   ReferenceImage reference_;  // as set, for readComparison
   bool comparedWithImage_ = false;  // what the last difference view used
   void uploadMesh(bool repairTVertices);

@@ -2,10 +2,12 @@
 // from the camera and the mesh, so the tests compare the linear (pre-tone-map) read-back
 // with it, per pixel.
 #include "core/camera.h"
+#include "core/display_transform.h"
 #include "core/error.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 
+#include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -233,6 +235,66 @@ TEST_F(MeshRendererTest, ElementEdgesBehindASurfaceAreHidden) {
   const Image image = renderer.readDisplay();
   for (size_t i = 0; i < image.rgba.size(); i += 4)
     ASSERT_FALSE(image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) << "pixel " << i / 4;
+}
+
+// An image shown in place of the mesh (the viewer's final gather): it is the linear read-back,
+// row for row, and it is displayed as a render is, its coverage blended with the background as
+// `radview render --method final-gather` blends it.
+TEST_F(MeshRendererTest, AShownImageReplacesTheRadiosityAndBlendsByCoverage) {
+  renderer.setMesh(mesh);
+  LinearImage shown{width, height, std::vector<float>(size_t(width) * height * 4)};
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float* p = &shown.rgba[(size_t(y) * width + x) * 4];
+      p[0] = float(x) / width;
+      p[1] = float(y) / height;
+      p[2] = 0.25f;
+      p[3] = float(x % 3) / 2.0f;  // coverage 0, 1/2, 1
+    }
+  renderer.setShownImage(shown);
+  RenderSettings settings;
+  settings.exposure = 1.0;
+  renderer.render(camera, settings, width, height);
+  EXPECT_EQ(renderer.readLinear().rgba, shown.rgba);
+  const Image image = renderer.readDisplay();
+  const Rgb background(settings.background);
+  for (size_t i = 0; i < size_t(width) * height; ++i) {
+    const float* p = &shown.rgba[4 * i];
+    const Rgb want = double(p[3]) * displayed(Rgb(p[0], p[1], p[2]), 2.0) + (1.0 - p[3]) * background;
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(image.rgba[4 * i + size_t(c)], 255.0 * want[c], 1.0) << "pixel " << i;
+  }
+}
+
+TEST_F(MeshRendererTest, AShownImageIsStretchedToTheRenderUntilCleared) {
+  renderer.setMesh(mesh);
+  renderer.render(camera, RenderSettings{}, width, height);
+  const LinearImage meshOnly = renderer.readLinear();
+  // Red, green over blue, white: its quadrants cover the render's.
+  renderer.setShownImage(LinearImage{2, 2, {1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1, 1, 1, 1, 1}});
+  renderer.render(camera, RenderSettings{}, width, height);
+  const LinearImage stretched = renderer.readLinear();
+  auto at = [&](int x, int y) { return glm::vec4(glm::make_vec4(&stretched.rgba[(size_t(y) * width + x) * 4])); };
+  EXPECT_EQ(at(width / 2 - 1, height / 2 - 1), glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(at(width / 2, 0), glm::vec4(0, 1, 0, 1));
+  EXPECT_EQ(at(0, height - 1), glm::vec4(0, 0, 1, 1));
+  EXPECT_EQ(at(width / 2, height / 2), glm::vec4(1, 1, 1, 1));
+  renderer.clearShownImage();
+  renderer.render(camera, RenderSettings{}, width, height);
+  EXPECT_EQ(renderer.readLinear().rgba, meshOnly.rgba);
+}
+
+TEST_F(MeshRendererTest, ElementEdgesAreDrawnOverAShownImage) {
+  renderer.setMesh(mesh);
+  renderer.setShownImage(LinearImage{1, 1, {0.5f, 0.5f, 0.5f, 1.0f}});
+  RenderSettings settings;
+  settings.elementEdges = true;
+  settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
+  renderer.render(camera, settings, width, height);
+  const Image image = renderer.readDisplay();
+  size_t magenta = 0;
+  for (size_t i = 0; i < image.rgba.size(); i += 4)
+    if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) ++magenta;
+  EXPECT_GT(magenta, size_t(width) / 2);  // the mesh's depth still places its edges
 }
 
 TEST(ShaderProgram, BrokenShaderNamesTheFile) {
