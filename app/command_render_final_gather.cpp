@@ -57,16 +57,20 @@ Image displayedImage(const LinearImage& linear, double exposureScale) {
 
 }  // namespace
 
-void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options,
-                       int width, int height, const std::string& out, const std::string& linearOut) {
-  const std::string glOnly = glOnlyOptionGiven(display);
-  if (!glOnly.empty()) throw Error(glOnly + ": a GL display option, not available with --method final-gather");
+void checkGatherOptions(const GatherOptions& options) {
   if (options.spp < 1 || options.spp > kMaxGatherSpp)
     throw Error("--spp " + std::to_string(options.spp) + ": expected 1.." + std::to_string(kMaxGatherSpp) +
                 " samples per pixel");
   if (options.emitterSamples < 1 || options.emitterSamples > kMaxEmitterSamples)
     throw Error("--emitter-samples " + std::to_string(options.emitterSamples) + ": expected 1.." +
                 std::to_string(kMaxEmitterSamples));
+}
+
+void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options,
+                       int width, int height, const std::string& out, const std::string& linearOut) {
+  const std::string glOnly = glOnlyOptionGiven(display);
+  if (!glOnly.empty()) throw Error(glOnly + ": a GL display option, not available with --method final-gather");
+  checkGatherOptions(options);
 
   GatherSettings settings;
   settings.interpolant = methodFromName(options.interpolant);

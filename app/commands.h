@@ -77,6 +77,16 @@ struct ViewerOptions {
   std::string size = "1280x800";
   bool solve = false;  // start solving the scene in the background at once
   DisplayOptions display;
+  GatherOptions gather = viewerGather();  // the final gather in the window ('9', --method final-gather)
+  bool framesWaitForSpp = false;  // --spp given: the last of --frames waits for the gather to reach it
+
+  // As render's, but the gather converges until 1024 samples per pixel (the --spp a user can
+  // wait for while looking; the panel changes it).
+  static GatherOptions viewerGather() {
+    GatherOptions gather;
+    gather.spp = 1024;
+    return gather;
+  }
 };
 
 int runRender(const RenderOptions& options);
@@ -96,6 +106,8 @@ int parseTessellation(const std::string& text);
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out, const std::string& linearOut = "");
 
+// Throws Error for a gather option out of its range (--spp, --emitter-samples).
+void checkGatherOptions(const GatherOptions& gather);
 // The final gather's image of the viewed file to a PNG at `out` (and its linear radiosity at
 // `linearOut`), with the display options' camera and exposure; prints the path and a summary.
 // Throws Error for a GL-only display option or a bad gather option.

@@ -88,6 +88,21 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
       ->check(CLI::Range(1e-12, 1e12));
 }
 
+// The final gather's options; `spp` says what --spp does for the command.
+void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& spp) {
+  command.add_option("--spp", g.spp, "final-gather: " + spp + " (1.." + std::to_string(kMaxGatherSpp) + ")")
+      ->capture_default_str();
+  command.add_option("--seed", g.seed, "final-gather: random seed (same seed, same image)")->capture_default_str();
+  command.add_option("--gather-interpolant", g.interpolant,
+                     "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9")
+      ->check(CLI::IsMember(methodNames()))
+      ->capture_default_str();
+  command.add_option("--emitter-samples", g.emitterSamples,
+                     "final-gather: shadow rays to the emitters per pixel per pass, 1.." +
+                         std::to_string(kMaxEmitterSamples))
+      ->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -110,7 +125,13 @@ int main(int argc, char** argv) {
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
   app.add_flag("--solve", viewer.solve,
                "Solve the scene in the background at once (as radview solve), showing it as it converges");
-  addDisplayOptions(app, viewer.display, gl::shadingMethodNames());
+  // Both the window and render show the GL methods and the final gather.
+  std::vector<std::string> methods = gl::shadingMethodNames();
+  methods.push_back(kFinalGather);
+  addDisplayOptions(app, viewer.display, methods);
+  addGatherOptions(app, viewer.gather,
+                   "samples per pixel at which the window's gather stops (key 9 or --method final-gather); "
+                   "given with --frames, the last frame waits for them");
 
   RenderOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "Render FILE headless (EGL) to a PNG");
@@ -120,22 +141,8 @@ int main(int argc, char** argv) {
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   renderCommand->add_option("--linear-out", render.linearOut,
                             "Also write the linear radiosity as a float image (.exr): a reference for --reference");
-  std::vector<std::string> renderMethods = gl::shadingMethodNames();
-  renderMethods.push_back(kFinalGather);
-  addDisplayOptions(*renderCommand, render.display, renderMethods);
-  renderCommand->add_option("--spp", render.gather.spp,
-                            "final-gather: samples per pixel, 1.." + std::to_string(kMaxGatherSpp))
-      ->capture_default_str();
-  renderCommand->add_option("--seed", render.gather.seed, "final-gather: random seed (same seed, same image)")
-      ->capture_default_str();
-  renderCommand->add_option("--gather-interpolant", render.gather.interpolant,
-                            "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9")
-      ->check(CLI::IsMember(methodNames()))
-      ->capture_default_str();
-  renderCommand->add_option("--emitter-samples", render.gather.emitterSamples,
-                            "final-gather: shadow rays to the emitters per pixel per pass, 1.." +
-                                std::to_string(kMaxEmitterSamples))
-      ->capture_default_str();
+  addDisplayOptions(*renderCommand, render.display, methods);
+  addGatherOptions(*renderCommand, render.gather, "samples per pixel");
 
   InfoOptions info;
   CLI::App* infoCommand = app.add_subcommand("info", "Print what FILE holds: polygons, emitters, mesh, T-vertices, "
@@ -180,6 +187,7 @@ int main(int argc, char** argv) {
   CLI::App* solveCommand = addSolveCommand(app, solve);
 
   CLI11_PARSE(app, argc, argv);
+  viewer.framesWaitForSpp = app.count("--spp") > 0;
   for (const char* name : {"--spp", "--seed", "--gather-interpolant", "--emitter-samples"})
     if (render.gather.givenWithGlMethod.empty() && renderCommand->count(name) > 0)
       render.gather.givenWithGlMethod = name;

@@ -1,5 +1,6 @@
 #include "app/background_solve.h"
 #include "app/commands.h"
+#include "app/viewer_gather.h"
 #include "app/viewer_panel.h"
 #include "core/error.h"
 #include "core/image_difference.h"
@@ -45,7 +46,11 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_4:
     case GLFW_KEY_5:
     case GLFW_KEY_6:
-    case GLFW_KEY_7: s.settings.method = static_cast<gl::ShadingMethod>(key - GLFW_KEY_1); break;
+    case GLFW_KEY_7:
+      s.settings.method = static_cast<gl::ShadingMethod>(key - GLFW_KEY_1);
+      s.gather.on = false;
+      break;
+    case GLFW_KEY_9: s.gather.on = true; break;
     case GLFW_KEY_V:
       s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book ? CloughTocherVariant::AffineInvariant
                                                                                     : CloughTocherVariant::Book;
@@ -132,7 +137,10 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   std::fprintf(stderr, "radview: no display (%s); rendering headless instead\n", glfwFailure.c_str());
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  renderHeadless(viewed, options.display, width, height, out);
+  if (options.display.method == kFinalGather)
+    renderFinalGather(viewed, options.display, options.gather, width, height, out, "");
+  else
+    renderHeadless(viewed, options.display, width, height, out);
   return 0;
 }
 
@@ -158,6 +166,7 @@ int runViewer(const ViewerOptions& options) {
   parseSize(options.size, width, height);
   if (!options.screenshot.empty() && options.frames == 0)
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
+  checkGatherOptions(options.gather);
 
   ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
 
@@ -182,7 +191,16 @@ int runViewer(const ViewerOptions& options) {
   glfwSwapInterval(1);
 
   ViewerState state;
-  state.settings = settingsFrom(options.display);
+  // With --method final-gather the GL method is the default one, drawn while the view moves.
+  const bool finalGather = options.display.method == kFinalGather;
+  DisplayOptions glDisplay = options.display;
+  if (finalGather) glDisplay.method = DisplayOptions().method;
+  state.settings = settingsFrom(glDisplay);
+  state.gather.on = finalGather;
+  state.gather.interpolant = methodFromName(options.gather.interpolant);
+  state.gather.emitterSamples = options.gather.emitterSamples;
+  state.gather.seed = options.gather.seed;
+  state.gather.targetSpp = options.gather.spp;
   gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
   if (!options.display.reference.empty()) renderer.setReferenceImage(readReferenceImage(options.display.reference));
@@ -193,6 +211,8 @@ int runViewer(const ViewerOptions& options) {
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
 
   BackgroundSolve solve;
+  ViewerGather gather;
+  uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
   state.solveRequested = options.solve && !state.viewed.file.isSolution;
 
   Input input;
@@ -222,6 +242,7 @@ int runViewer(const ViewerOptions& options) {
   int status = 0;
   for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
     const auto start = std::chrono::steady_clock::now();
+    const bool lastFrame = options.frames > 0 && frame >= options.frames;
     glfwPollEvents();
     handleDrag(window, input);
     if (!input.droppedPath.empty() || state.openRequested) {
@@ -234,6 +255,7 @@ int runViewer(const ViewerOptions& options) {
         ViewedFile next = openForViewing(path, options.display.elementSize);
         solve.abandon();  // its partial solutions belong to the old scene
         renderer.setMesh(next.mesh);
+        ++meshVersion;
         adoptViewedFile(state, std::move(next));
       } catch (const std::exception& e) {
         state.status = e.what();
@@ -250,6 +272,7 @@ int runViewer(const ViewerOptions& options) {
     if (std::optional<RadiosityMesh> solved = solve.takeSolution()) {
       try {
         renderer.setMesh(*solved);
+        ++meshVersion;
         state.viewed.tVertexCount = MeshTopology(*solved).tVertices().size();
         state.viewed.mesh = std::move(*solved);
       } catch (const std::exception& e) {
@@ -283,6 +306,8 @@ int runViewer(const ViewerOptions& options) {
     if (fbWidth > 0 && fbHeight > 0) {
       try {
         fitClipPlanes(state.camera, state.viewed.mesh.bounds());
+        gather.update(state.gather, state.viewed.mesh, meshVersion, state.camera, fbWidth, fbHeight, renderer,
+                      lastFrame && options.framesWaitForSpp);
         renderer.render(state.camera, state.settings, fbWidth, fbHeight);
         renderer.presentToDefaultFramebuffer(fbWidth, fbHeight);
       } catch (const std::exception& e) {
@@ -310,7 +335,6 @@ int runViewer(const ViewerOptions& options) {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-    const bool lastFrame = options.frames > 0 && frame >= options.frames;
     if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
       try {
         const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : nextScreenshotName();

@@ -1,5 +1,6 @@
 #include "app/viewer_panel.h"
 
+#include "app/commands.h"
 #include "mesh/display_mesh.h"
 
 #include <imgui.h>
@@ -25,7 +26,7 @@ void resetCamera(ViewerState& state) {
 
 const char* shortcutHelp() {
   return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
-         "7 Clough-Tocher, V its book / affine variant,\n"
+         "7 Clough-Tocher, V its book / affine variant, 9 the final gather (eq. 9.9 per pixel, converging),\n"
          "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
          "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
          "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
@@ -70,6 +71,37 @@ void drawDifferenceControls(ViewerState& state) {
   if (ImGui::SliderFloat("Bar ends, 8-bit steps", &steps, 0.25f, 64.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
     s.differenceScale = steps / 255.0;
   if (!state.difference.empty()) ImGui::TextWrapped("%s", state.difference.c_str());
+}
+
+// The final gather (C&W §9.3.1) shown in place of the GL method: B^ under its integral, where
+// it stops, and how far it has got.
+void drawGatherControls(ViewerState& state) {
+  GatherControls& g = state.gather;
+  section("Final gather (C&W 9.3.1, eq. 9.9)");
+  int interpolant = static_cast<int>(g.interpolant);
+  ImGui::PushItemWidth(200);
+  ImGui::Combo("B^ interpolant", &interpolant, "flat\0linear\0bilinear\0quadratic\0c1-quadratic\0clough-tocher\0");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Reconstructs the solution under the integral (the CPU interpolant, as radview sample)");
+  g.interpolant = static_cast<Method>(interpolant);
+  ImGui::SliderInt("Shadow rays per pass", &g.emitterSamples, 1, 16);
+  ImGui::SliderInt("Stop at, spp", &g.targetSpp, 1, kMaxGatherSpp, "%d", ImGuiSliderFlags_Logarithmic);
+  ImGui::PopItemWidth();
+  ImGui::Checkbox("Pause", &g.paused);
+  const GatherProgress& p = g.progress;
+  const double raysPerSecond = p.seconds > 0.0 ? double(p.rays) / p.seconds : 0.0;
+  if (!p.error.empty()) {
+    ImGui::TextWrapped("%s", p.error.c_str());
+  } else if (p.preview) {
+    ImGui::Text("preview at 1/4 resolution, %.1f s, %.2fM rays/s", p.seconds, raysPerSecond * 1e-6);
+  } else if (p.spp == 0) {
+    ImGui::TextDisabled("starts when the view is still");
+  } else {
+    ImGui::Text("%d spp%s, %.1f s, %.2fM rays/s", p.spp, p.reachedTarget ? " (done)" : g.paused ? " (paused)" : "",
+                p.seconds, raysPerSecond * 1e-6);
+  }
+  const char* method = gl::shadingMethodNames()[size_t(state.settings.method)].c_str();
+  ImGui::TextDisabled("while the view moves: %s", method);
 }
 
 // A scene's solve in the background (radview solve's defaults), and writing what is shown.
@@ -132,7 +164,8 @@ void drawPanel(ViewerState& state) {
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
 
   section("Interpolant (C&W 9.2)");
-  int method = static_cast<int>(state.settings.method);
+  constexpr int kFinalGatherChoice = 7;  // after the seven GL methods
+  int method = state.gather.on ? kFinalGatherChoice : static_cast<int>(state.settings.method);
   static const char* const labels[] = {"Flat",     "Gouraud",      "Scanline Gouraud", "Bilinear",
                                        "Quadratic", "C1 quadratic", "Clough-Tocher"};
   for (int m = 0; m < 7; ++m) {
@@ -140,7 +173,12 @@ void drawPanel(ViewerState& state) {
     if (m % 2) ImGui::SameLine(190);
     ImGui::RadioButton(label.c_str(), &method, m);
   }
-  state.settings.method = static_cast<gl::ShadingMethod>(method);
+  ImGui::SameLine(190);
+  ImGui::RadioButton("Final gather [9]", &method, kFinalGatherChoice);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("C&W 9.3.1: eq. 9.9 per pixel by ray casting, converging in the background");
+  state.gather.on = method == kFinalGatherChoice;
+  if (!state.gather.on) state.settings.method = static_cast<gl::ShadingMethod>(method);
   if (state.settings.method == gl::ShadingMethod::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
     if (ImGui::IsItemHovered())
@@ -181,6 +219,8 @@ void drawPanel(ViewerState& state) {
       ImGui::PopItemWidth();
     }
   }
+
+  if (state.gather.on) drawGatherControls(state);
 
   section("Display");
   float exposure = static_cast<float>(state.settings.exposure);

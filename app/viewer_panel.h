@@ -1,12 +1,27 @@
 #pragma once
 // The viewer's state and its ImGui panel. ImGui lives only in app/.
+#include "app/background_gather.h"
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "gl/mesh_renderer.h"
+#include "interp/interpolant.h"
 
+#include <cstdint>
 #include <string>
 
 namespace radview {
+
+// The final gather (C&W §9.3.1) in the window, in place of the GL method (which is drawn while
+// the view moves): what the panel and the command line set, and what the gather reports.
+struct GatherControls {
+  bool on = false;
+  Method interpolant = Method::Linear;  // B^ under the integral of eq. 9.9
+  int emitterSamples = 1;               // shadow rays per pixel per pass
+  uint64_t seed = 1;
+  int targetSpp = 1024;  // it stops at this many samples per pixel
+  bool paused = false;
+  GatherProgress progress;
+};
 
 struct ViewerState {
   ViewedFile viewed;
@@ -32,6 +47,7 @@ struct ViewerState {
   std::string solveStatus;
   std::string solutionPath;            // where "Write solution" writes the mesh shown
   bool writeSolutionRequested = false;
+  GatherControls gather;
 };
 
 void rotateView45(ViewerState& state);

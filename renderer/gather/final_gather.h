@@ -55,6 +55,9 @@ struct GatherSettings {
   Camera camera;
   int emitterSamples = 1;  // shadow rays per pixel per pass
 };
+// Equal settings make the same image (of the same mesh): every field, the camera's included.
+bool operator==(const GatherSettings& a, const GatherSettings& b);
+inline bool operator!=(const GatherSettings& a, const GatherSettings& b) { return !(a == b); }
 
 // One sample of one pixel: B at the surface seen, or nothing seen.
 struct PixelSample {
