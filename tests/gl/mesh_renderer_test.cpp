@@ -115,6 +115,19 @@ class MeshRendererTest : public ::testing::Test {
       }
     return worst;
   }
+
+  // Renders with the element edges in magenta and counts the magenta pixels.
+  size_t magentaEdgePixels() {
+    RenderSettings settings;
+    settings.elementEdges = true;
+    settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
+    renderer.render(camera, settings, width, height);
+    const Image image = renderer.readDisplay();
+    size_t magenta = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4)
+      if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) ++magenta;
+    return magenta;
+  }
 };
 
 TEST_F(MeshRendererTest, ContextIsOpenGL45Core) {
@@ -209,15 +222,7 @@ TEST_F(MeshRendererTest, CoverageIsMarkedInTheLinearImage) {
 
 TEST_F(MeshRendererTest, ElementEdgesAreDrawnOverTheSurface) {
   renderer.setMesh(mesh);
-  RenderSettings settings;
-  settings.elementEdges = true;
-  settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
-  renderer.render(camera, settings, width, height);
-  const Image image = renderer.readDisplay();
-  size_t magenta = 0;
-  for (size_t i = 0; i < image.rgba.size(); i += 4)
-    if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) ++magenta;
-  EXPECT_GT(magenta, size_t(width) / 2);  // the triangle's edges, at least a pixel wide
+  EXPECT_GT(magentaEdgePixels(), size_t(width) / 2);  // the triangle's edges, at least a pixel wide
 }
 
 TEST_F(MeshRendererTest, ElementEdgesBehindASurfaceAreHidden) {
@@ -286,15 +291,7 @@ TEST_F(MeshRendererTest, AShownImageIsStretchedToTheRenderUntilCleared) {
 TEST_F(MeshRendererTest, ElementEdgesAreDrawnOverAShownImage) {
   renderer.setMesh(mesh);
   renderer.setShownImage(LinearImage{1, 1, {0.5f, 0.5f, 0.5f, 1.0f}});
-  RenderSettings settings;
-  settings.elementEdges = true;
-  settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
-  renderer.render(camera, settings, width, height);
-  const Image image = renderer.readDisplay();
-  size_t magenta = 0;
-  for (size_t i = 0; i < image.rgba.size(); i += 4)
-    if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) ++magenta;
-  EXPECT_GT(magenta, size_t(width) / 2);  // the mesh's depth still places its edges
+  EXPECT_GT(magentaEdgePixels(), size_t(width) / 2);  // the mesh's depth still places its edges
 }
 
 TEST(ShaderProgram, BrokenShaderNamesTheFile) {
