@@ -61,7 +61,7 @@ std::string csvTable(const std::vector<TradeoffRow>& rows) {
 
 bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& title, const std::string& path) {
   namespace IBA = OIIO::ImageBufAlgo;
-  const int W = 960, H = 640, left = 90, right = 30, top = 50, bottom = 70;
+  const int W = 960, H = 660, left = 90, right = 30, top = 70, bottom = 70;
   OIIO::ImageBuf plot(OIIO::ImageSpec(W, H, 3, OIIO::TypeDesc::UINT8));
   const float white[3] = {1, 1, 1}, grey[3] = {0.85f, 0.85f, 0.85f}, black[3] = {0, 0, 0},
               blue[3] = {0.15f, 0.35f, 0.8f}, red[3] = {0.85f, 0.15f, 0.1f};
@@ -106,8 +106,8 @@ bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& 
   }
   IBA::render_box(plot, left, top, W - right, H - bottom, OIIO::cspan<float>(black, 3));
   text(W / 2, H - 20, "GPU frame time, ms (log scale)", 17, black, IBA::TextAlignX::Center);
-  text(12, top - 14, "RMSE of displayed luminance against the final gather, 8-bit steps", 17, black);
-  text(W / 2, 24, title, 18, black, IBA::TextAlignX::Center);
+  text(12, top - 12, "RMSE of displayed luminance against the final gather, 8-bit steps", 17, black);
+  text(W / 2, 26, title, 18, black, IBA::TextAlignX::Center);
 
   std::vector<const TradeoffRow*> front;
   for (const TradeoffRow& r : rows) {
