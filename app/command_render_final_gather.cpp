@@ -37,10 +37,12 @@ std::string glOnlyOptionGiven(const DisplayOptions& d) {
   return "";
 }
 
+}  // namespace
+
 // The GL display pass's picture of a linear image (shaders/tonemap.frag): exposure and sRGB
 // where a surface is seen, the background colour where none is; a pixel partly covered blends
 // the two by its coverage (the gather antialiases, the GL renderer does not).
-Image displayedImage(const LinearImage& linear, double exposureScale) {
+Image displayedGather(const LinearImage& linear, double exposureScale) {
   const gl::RenderSettings defaults;
   const Rgb background(defaults.background);
   Image image{linear.width, linear.height, std::vector<uint8_t>(linear.rgba.size())};
@@ -54,8 +56,6 @@ Image displayedImage(const LinearImage& linear, double exposureScale) {
   }
   return image;
 }
-
-}  // namespace
 
 void checkGatherOptions(const GatherOptions& options) {
   if (options.spp < 1 || options.spp > kMaxGatherSpp)
@@ -92,7 +92,7 @@ void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, 
   const double elapsed = seconds();
 
   const LinearImage image = gather.image();
-  writePng(displayedImage(image, std::exp2(display.exposure)), out);
+  writePng(displayedGather(image, std::exp2(display.exposure)), out);
   if (!linearOut.empty()) writeLinearImage(image, linearOut);
   std::printf("%s\n", out.c_str());
   std::printf("final gather: %d spp, %dx%d, B^ %s, seed %llu: %.2f s (setup included), %.3g M rays, %.3g M rays/s\n",

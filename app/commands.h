@@ -90,6 +90,9 @@ struct ViewerOptions {
 };
 
 int runRender(const RenderOptions& options);
+// A final-gather image as the GL display pass would show it: exposure and sRGB where a surface
+// is seen, blended with the background by coverage.
+Image displayedGather(const LinearImage& linear, double exposureScale);
 int runInfo(const InfoOptions& options);
 int runSample(const SampleOptions& options);
 // Opens the window; where no display exists, renders headless to a PNG instead (unless a

@@ -1,6 +1,7 @@
 // radview: a viewer for radiosity solutions (Cohen & Wallace, Radiosity and Realistic Image
 // Synthesis, §9.2-9.3). This file is the command line; each subcommand lives in its own file.
 #include "app/asset_paths.h"
+#include "app/command_bench.h"
 #include "app/command_solve.h"
 #include "app/commands.h"
 #include "app/viewer_panel.h"
@@ -185,6 +186,8 @@ int main(int argc, char** argv) {
 
   SolveOptions solve;
   CLI::App* solveCommand = addSolveCommand(app, solve);
+  BenchOptions bench;
+  CLI::App* benchCommand = addBenchCommand(app, bench);
 
   CLI11_PARSE(app, argc, argv);
   viewer.framesWaitForSpp = app.count("--spp") > 0;
@@ -196,6 +199,7 @@ int main(int argc, char** argv) {
     if (*infoCommand) return runInfo(info);
     if (*sampleCommand) return runSample(sample);
     if (*solveCommand) return runSolve(solve);
+    if (*benchCommand) return runBench(bench);
     if (viewer.file.empty()) viewer.file = bundledScenePath();
     return runViewer(viewer);
   } catch (const Error& e) {

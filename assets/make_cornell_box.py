@@ -12,11 +12,10 @@ third of 400-700 nm (R 600-700, G 500-596, B 400-496 nm). Choices of ours, state
     light spectrum usually used for this scene (400:0, 500:8, 600:15.6, 700:18.4).
 Run: python3 assets/make_cornell_box.py  (writes assets/cornell_box.gltf)
 """
-import base64
-import json
 import math
 import os
-import struct
+
+import gltf_quads
 
 
 def band_mean(samples, lo, hi, step=4):
@@ -67,71 +66,18 @@ QUADS = [  # (name, material, 4 vertices in mm); (v1-v0)x(v2-v0) faces the lit s
 
 def main():
     material_names = ["white", "green", "red", "light"]
-    materials = []
-    for name in material_names:
-        if name == "light":
-            peak = max(E)
-            materials.append({
-                "name": "light",
-                "pbrMetallicRoughness": {"baseColorFactor": [0.0, 0.0, 0.0, 1.0], "metallicFactor": 0.0},
-                "emissiveFactor": [round(c / peak, 6) for c in E],
-                "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": round(peak, 6)}},
-            })
-        else:
-            materials.append({
-                "name": name,
-                "pbrMetallicRoughness": {"baseColorFactor": MATERIALS[name] + [1.0], "metallicFactor": 0.0},
-            })
-
-    blob = bytearray()
-    accessors, views, meshes, nodes = [], [], [], []
-    for name, material, quad in QUADS:
-        positions = [[c / 1000.0 for c in v] for v in quad]
-        offset = len(blob)
-        for p in positions:
-            blob += struct.pack("<3f", *p)
-        views.append({"buffer": 0, "byteOffset": offset, "byteLength": 48, "target": 34962})
-        accessors.append({
-            "bufferView": len(views) - 1, "componentType": 5126, "count": 4, "type": "VEC3",
-            "min": [min(p[i] for p in positions) for i in range(3)],
-            "max": [max(p[i] for p in positions) for i in range(3)],
-        })
-        position_accessor = len(accessors) - 1
-        offset = len(blob)
-        blob += struct.pack("<6H", 0, 1, 2, 0, 2, 3)
-        views.append({"buffer": 0, "byteOffset": offset, "byteLength": 12, "target": 34963})
-        accessors.append({"bufferView": len(views) - 1, "componentType": 5123, "count": 6, "type": "SCALAR"})
-        while len(blob) % 4:
-            blob.append(0)
-        meshes.append({"name": name, "primitives": [{
-            "attributes": {"POSITION": position_accessor}, "indices": len(accessors) - 1,
-            "material": material_names.index(material)}]})
-        nodes.append({"name": name, "mesh": len(meshes) - 1})
-
+    materials = [gltf_quads.material("light", emission=E) if name == "light"
+                 else gltf_quads.material(name, rho=MATERIALS[name]) for name in material_names]
+    quads = [(name, material_names.index(material), [[c / 1000.0 for c in v] for v in quad])
+             for name, material, quad in QUADS]
     yfov = 2.0 * math.atan(0.0125 / 0.035)  # film 25 mm, focal length 35 mm
-    nodes.append({"name": "camera", "camera": 0, "translation": [0.278, 0.273, -0.8],
-                  "rotation": [0.0, 1.0, 0.0, 0.0]})  # glTF cameras look down -Z: turn to +Z
-
-    gltf = {
-        "asset": {"version": "2.0", "generator": "radview assets/make_cornell_box.py"},
-        "extensionsUsed": ["KHR_materials_emissive_strength"],
-        "scene": 0,
-        "scenes": [{"name": "Cornell box", "nodes": list(range(len(nodes)))}],
-        "nodes": nodes,
-        "meshes": meshes,
-        "materials": materials,
-        "cameras": [{"type": "perspective", "name": "Cornell camera",
-                     "perspective": {"yfov": round(yfov, 6), "aspectRatio": 1.0, "znear": 0.01}}],
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [{"byteLength": len(blob),
-                     "uri": "data:application/octet-stream;base64," + base64.b64encode(bytes(blob)).decode()}],
-    }
+    camera_node = {"name": "camera", "translation": [0.278, 0.273, -0.8],
+                   "rotation": [0.0, 1.0, 0.0, 0.0]}  # glTF cameras look down -Z: turn to +Z
+    camera = {"type": "perspective", "name": "Cornell camera",
+              "perspective": {"yfov": round(yfov, 6), "aspectRatio": 1.0, "znear": 0.01}}
     out = os.path.join(os.path.dirname(os.path.abspath(__file__)), "cornell_box.gltf")
-    with open(out, "w") as f:
-        json.dump(gltf, f, indent=1)
-        f.write("\n")
-    print(out)
+    gltf_quads.write_quad_scene(out, "Cornell box", "radview assets/make_cornell_box.py", materials, quads,
+                                camera_node, camera)
 
 
 if __name__ == "__main__":

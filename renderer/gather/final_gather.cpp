@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "gather/hemisphere_sampling.h"
+#include "gather/visible_elements.h"
 
 #include <string>
 
@@ -11,17 +12,6 @@ namespace radview {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-// The elements as the ray caster's polygons, in element order: they tile the surfaces exactly,
-// T-vertices included (a T-vertex lies on its neighbour's edge), so the rays see no cracks.
-Scene elementScene(const RadiosityMesh& mesh) {
-  Scene scene;
-  scene.materials = mesh.materials;
-  scene.polygons.reserve(mesh.elements.size());
-  for (size_t e = 0; e < mesh.elements.size(); ++e)
-    scene.polygons.push_back({mesh.cornerPositions(e), mesh.elements[e].material});
-  return scene;
-}
 
 GatherSettings checked(const GatherSettings& settings) {
   if (settings.width < 1 || settings.height < 1)

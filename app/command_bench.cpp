@@ -1,0 +1,277 @@
+#include "app/command_bench.h"
+
+#include "app/commands.h"
+#include "app/viewed_file.h"
+#include "bench/mach_bands.h"
+#include "bench/tradeoff.h"
+#include "core/camera.h"
+#include "core/display_transform.h"
+#include "core/error.h"
+#include "core/image_difference.h"
+#include "gather/final_gather.h"
+#include "gather/visible_elements.h"
+#include "gl/egl_context.h"
+#include "gl/mesh_renderer.h"
+#include "interp/tessellation_level.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace radview {
+
+namespace {
+
+std::vector<double> numberList(const std::string& text, const std::string& option) {
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    size_t used = 0;
+    double v = 0.0;
+    try {
+      v = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || !std::isfinite(v))
+      throw Error(option + " '" + text + "': expected numbers separated by commas");
+    values.push_back(v);
+  }
+  return values;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// A GL method at one setting: what a row renders.
+struct Variant {
+  gl::ShadingMethod method;
+  int tessellation = 0;  // 0 per pixel, a level, or kAdaptiveTessellation
+  double tolerance = 0.5;
+  bool relaxed = true;   // C0 edges tagged (false: the mesh without its C0 tags)
+  std::string setting;
+};
+
+// Pixels that see an element whose plane their four neighbours see too (no silhouette).
+std::vector<char> interiorPixels(const RadiosityMesh& mesh, const std::vector<int32_t>& elementAt, int width,
+                                 int height) {
+  const double tolerance = 1e-9 * mesh.bounds().diagonal();
+  auto samePlane = [&](int32_t a, int32_t b) {
+    if (a < 0 || b < 0) return false;
+    if (a == b) return true;
+    const Vec3 n = mesh.elementNormal(size_t(a));
+    return glm::dot(n, mesh.elementNormal(size_t(b))) > 1.0 - 1e-9 &&
+           std::abs(glm::dot(n, mesh.nodes[mesh.elements[b].corners[0]].position -
+                                    mesh.nodes[mesh.elements[a].corners[0]].position)) < tolerance;
+  };
+  std::vector<char> interior(elementAt.size(), 0);
+  for (int y = 1; y + 1 < height; ++y)
+    for (int x = 1; x + 1 < width; ++x) {
+      const size_t p = size_t(y) * width + x;
+      interior[p] = samePlane(elementAt[p], elementAt[p - 1]) && samePlane(elementAt[p], elementAt[p + 1]) &&
+                    samePlane(elementAt[p], elementAt[p - width]) && samePlane(elementAt[p], elementAt[p + width]);
+    }
+  return interior;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw Error(path, "cannot write");
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
+  CLI::App* command = app.add_subcommand(
+      "bench", "Measure every method and setting on one view: GPU frame time, triangles, error against the "
+               "per-pixel final gather, Mach bands; writes a Markdown table, CSV and a plot");
+  command->add_option("file", o.file, "A solution file, or a scene (meshed and lit directly)")->required();
+  command->add_option("--camera", o.camera, "As render --camera");
+  command->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  command->add_option("--exposure", o.exposure, "Exposure in stops")->capture_default_str();
+  command->add_option("--spp", o.spp, "Samples per pixel of the final-gather reference")
+      ->check(CLI::Range(1, kMaxGatherSpp))
+      ->capture_default_str();
+  command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
+      ->capture_default_str();
+  command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command->add_option("--levels", o.levels, "Tessellation levels, comma-separated, 1..64")->capture_default_str();
+  command->add_option("--tolerances", o.tolerances, "Adaptive tessellation tolerances, 8-bit steps, comma-separated")
+      ->capture_default_str();
+  command->add_option("--out-dir", o.outDir,
+                      "Where bench.md, bench.csv, bench.png, reference.exr/.png and each method's PNG go")
+      ->capture_default_str();
+  command->add_option("--element-size", o.elementSize, "Scenes: element size of the uniform mesh")
+      ->check(CLI::Range(1e-12, 1e12));
+  return command;
+}
+
+int runBench(const BenchOptions& options) {
+  int width = 0, height = 0;
+  parseSize(options.size, width, height);
+  std::vector<int> levels;
+  for (double level : numberList(options.levels, "--levels")) {
+    if (level != std::floor(level) || level < 1 || level > kMaxTessellationLevel)
+      throw Error("--levels: " + std::to_string(level) + " is not a level 1.." + std::to_string(kMaxTessellationLevel));
+    levels.push_back(int(level));
+  }
+  const std::vector<double> tolerances = numberList(options.tolerances, "--tolerances");
+  for (double t : tolerances)
+    if (!(t >= 0.01 && t <= 100.0)) throw Error("--tolerances: " + std::to_string(t) + " is not within 0.01..100 steps");
+  std::error_code ec;
+  std::filesystem::create_directories(options.outDir, ec);
+  if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
+
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize);
+  const RadiosityMesh& mesh = viewed.mesh;
+  const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
+  const double exposureScale = std::exp2(options.exposure);
+
+  // The reference: the final gather at the same camera and size.
+  GatherSettings gather;
+  gather.interpolant = methodFromName(options.gatherInterpolant);
+  gather.width = width;
+  gather.height = height;
+  gather.camera = camera;
+  const auto start = std::chrono::steady_clock::now();
+  FinalGather reference(mesh, gather);
+  reference.addPasses(options.spp);
+  const double gatherSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const ReferenceImage referenceImage{reference.image(), true, options.outDir + "/reference.exr"};
+  writeLinearImage(referenceImage.pixels, referenceImage.path);
+  writePng(displayedGather(referenceImage.pixels, exposureScale), options.outDir + "/reference.png");
+  std::printf("reference: final gather, %d spp, B^ %s, %dx%d: %.1f s\n", options.spp,
+              options.gatherInterpolant.c_str(), width, height, gatherSeconds);
+
+  const std::vector<int32_t> elementAt = visibleElements(mesh, camera, width, height);
+  const EdgeStencils stencils = edgeStencils(mesh, elementAt, width, height);
+  // Errors are taken where a pixel and its four neighbours see one plane: along silhouettes
+  // the reference antialiases (it averages the surfaces a pixel covers) and the GL renderer
+  // does not, a difference of sampling, not of interpolation.
+  const std::vector<char> interior = interiorPixels(mesh, elementAt, width, height);
+  const double referenceMach = meanGradientJump(referenceImage.pixels, exposureScale, stencils.smooth);
+  const double referenceKinks = meanGradientJump(referenceImage.pixels, exposureScale, stencils.c0);
+
+  // Clough-Tocher without relaxation: the same mesh with its C0 tags dropped (C-1 edges keep
+  // their separate nodes, so they stay C-1).
+  RadiosityMesh unrelaxed = mesh;
+  unrelaxed.discontinuities.erase(std::remove_if(unrelaxed.discontinuities.begin(), unrelaxed.discontinuities.end(),
+                                                 [](const DiscontinuityEdge& d) { return d.order == Continuity::C0; }),
+                                  unrelaxed.discontinuities.end());
+  const bool hasC0 = unrelaxed.discontinuities.size() != mesh.discontinuities.size();
+
+  std::vector<Variant> variants;
+  using M = gl::ShadingMethod;
+  for (M m : {M::Flat, M::Gouraud, M::ScanlineGouraud, M::Bilinear}) variants.push_back({m, 0, 0.5, true, "per pixel"});
+  for (M m : {M::Quadratic, M::C1Quadratic, M::CloughTocher})
+    for (bool relaxed : {true, false}) {
+      if (!relaxed && !(m != M::Quadratic && hasC0)) continue;
+      const std::string suffix = relaxed ? "" : ", C0 not relaxed";
+      variants.push_back({m, 0, 0.5, relaxed, "per pixel" + suffix});
+      for (int level : levels) variants.push_back({m, level, 0.5, relaxed, "level " + std::to_string(level) + suffix});
+      for (double t : tolerances) {
+        char name[48];
+        std::snprintf(name, sizeof name, "adaptive %g", t);
+        variants.push_back({m, gl::kAdaptiveTessellation, t, relaxed, name + suffix});
+      }
+    }
+
+  gl::EglContext context;
+  gl::MeshRenderer renderer;
+  bool relaxedLoaded = true;
+  renderer.setMesh(mesh);
+  std::vector<TradeoffRow> rows;
+  for (const Variant& v : variants) {
+    if (v.relaxed != relaxedLoaded) {
+      renderer.setMesh(v.relaxed ? mesh : unrelaxed);
+      relaxedLoaded = v.relaxed;
+    }
+    gl::RenderSettings settings;
+    settings.method = v.method;
+    settings.tessellation = v.tessellation;
+    settings.tessellationTolerance = v.tolerance / 255.0;
+    settings.exposure = options.exposure;
+    // Two frames first: the pieces are built, and the timer queries (read two frames late)
+    // then time this setting only.
+    for (int k = 0; k < 2; ++k) {
+      renderer.render(camera, settings, width, height);
+      glFinish();
+    }
+    std::vector<double> ms;
+    for (int k = 0; k < options.frames; ++k) {
+      renderer.render(camera, settings, width, height);
+      glFinish();
+      ms.push_back(renderer.gpuFrameMs());
+    }
+    TradeoffRow row;
+    row.method = gl::shadingMethodNames()[int(v.method)];
+    row.setting = v.setting;
+    row.frameMs = median(ms);
+    const auto& tess = renderer.tessellationStatistics();
+    row.triangles = v.method < M::Quadratic ? renderer.triangleCount()
+                    : v.tessellation == 0   ? tess.patches
+                                            : tess.trianglesGenerated;
+    if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
+      std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
+      writePng(renderer.readDisplay(), options.outDir + "/" + name);
+    }
+    LinearImage image = renderer.readLinear();
+    for (size_t p = 0; p < interior.size(); ++p)
+      if (!interior[p]) image.rgba[4 * p + 3] = 0.0f;  // left out of every comparison below
+    double sum = 0.0, worst = 0.0;
+    size_t count = 0;
+    for (size_t i = 0; i < image.rgba.size(); i += 4) {
+      const float* a = &image.rgba[i];
+      const float* b = &referenceImage.pixels.rgba[i];
+      if (!(a[3] > 0.5f && b[3] > 0.5f)) continue;
+      const double d = luminance(Rgb(a[0], a[1], a[2])) - luminance(Rgb(b[0], b[1], b[2]));
+      if (!std::isfinite(d)) continue;
+      sum += d * d;
+      worst = std::max(worst, std::abs(d));
+      ++count;
+    }
+    row.rmse = count ? std::sqrt(sum / double(count)) : 0.0;
+    row.maxError = worst;
+    const DisplayDifference shown = displayDifference(image, referenceImage, exposureScale);
+    row.displayRmse = shown.rmse * 255.0;
+    row.displayMax = shown.maxAbs * 255.0;
+    row.machBands = meanGradientJump(image, exposureScale, stencils.smooth);
+    row.c0Kinks = meanGradientJump(image, exposureScale, stencils.c0);
+    std::fprintf(stderr, "%s %s: %.3g ms, display RMSE %.3g steps\n", row.method.c_str(), row.setting.c_str(),
+                 row.frameMs, row.displayRmse);
+    rows.push_back(row);
+  }
+  markParetoFront(rows);
+
+  std::ostringstream header;
+  header << "radview bench " << options.file << ": " << width << "x" << height << ", camera '"
+         << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure << "; reference "
+         << options.spp << " spp final gather (B^ " << options.gatherInterpolant << ", " << gatherSeconds << " s); "
+         << "its own Mach-band measure " << referenceMach << ", C0 kinks " << referenceKinks << " steps/px (noise "
+         << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
+         << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames << " frames.\n\n";
+  const std::string table = markdownTable(rows);
+  writeText(options.outDir + "/bench.md", header.str() + table);
+  writeText(options.outDir + "/bench.csv", csvTable(rows));
+  const std::string title = std::filesystem::path(options.file).filename().string() + ", " + options.size;
+  if (!writeTradeoffPlot(rows, title, options.outDir + "/bench.png"))
+    std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");
+  std::printf("%s%s", header.str().c_str(), table.c_str());
+  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.exr, reference.png and one PNG per method\n",
+              options.outDir.c_str());
+  return 0;
+}
+
+}  // namespace radview

@@ -1,0 +1,27 @@
+#pragma once
+// radview bench: the speed-versus-accuracy trade of every method and setting on one view of a
+// file, against the per-pixel final gather (C&W §9.3.1) as the reference.
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace radview {
+
+struct BenchOptions {
+  std::string file;
+  std::string camera;              // as render --camera
+  std::string size = "512x512";
+  double exposure = 0.0;
+  int spp = 256;                   // the reference's samples per pixel
+  std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
+  int frames = 9;                  // timed frames per row (median)
+  std::string levels = "1,2,4,8,16,32,64";  // tessellation levels of the quadratic and C1 methods
+  std::string tolerances = "0.5,2";          // adaptive tessellation tolerances, 8-bit steps
+  std::string outDir = "bench";
+  double elementSize = 0.0;        // scenes only
+};
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
+int runBench(const BenchOptions& options);
+
+}  // namespace radview
