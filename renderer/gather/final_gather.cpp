@@ -96,8 +96,10 @@ PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
   // C&W eq. 9.9.
   const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
   const Vec3& n = normals_[element];
-  const Rgb gathered = directLight(seen->position, n, stream, result.rays) +
-                       indirectLight(seen->position, n, stream, result.rays);
+  // Both draw from one stream, so their order is fixed here: the operands of + are evaluated in
+  // an unspecified order (gcc and clang differ), which made images depend on the compiler.
+  const Rgb indirect = indirectLight(seen->position, n, stream, result.rays);
+  const Rgb gathered = directLight(seen->position, n, stream, result.rays) + indirect;
   result.B = material.E + material.rho * gathered;
   return result;
 }

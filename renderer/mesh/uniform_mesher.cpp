@@ -134,7 +134,9 @@ void meshTriangles(RadiosityMesh& mesh, const std::vector<Vec3>& v,
     if (k == n) return v[q];
     return v[p] + (double(k) / n) * (v[q] - v[p]);
   };
-  for (const auto& [a, b, c] : triangles) {
+  for (const auto& triangle : triangles) {
+    // Not a structured binding: C++17 lambdas cannot capture those.
+    const int a = triangle[0], b = triangle[1], c = triangle[2];
     // Node (i, j): i steps towards b, j towards c.
     auto at = [&](int i, int j) {
       if (j == 0) return nodeOf(onEdge(a, b, i));

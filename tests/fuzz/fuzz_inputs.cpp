@@ -1,0 +1,105 @@
+#include "tests/fuzz/fuzz_inputs.h"
+
+#include "core/error.h"
+#include "interp/interpolant.h"
+#include "interp/t_vertex_repair.h"
+#include "mesh/display_mesh.h"
+#include "mesh/load_file.h"
+#include "mesh/topology.h"
+#include "solve/direct_light.h"
+#include "tests/fuzz/mesh_bytes.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace radview::fuzz {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// One directory per process: libFuzzer's parallel jobs are processes.
+const fs::path& privateDirectory() {
+  static const fs::path directory = [] {
+    fs::path d = fs::temp_directory_path() / ("radview-fuzz-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return directory;
+}
+
+bool finite(const Sample& s) {
+  bool ok = std::isfinite(s.B.r) && std::isfinite(s.B.g) && std::isfinite(s.B.b);
+  for (const Vec3& g : s.gradient) ok = ok && std::isfinite(g.x) && std::isfinite(g.y) && std::isfinite(g.z);
+  return ok;
+}
+
+Vec3 cornerMean(const RadiosityMesh& mesh, size_t element) {
+  Vec3 sum(0.0);
+  for (uint32_t corner : mesh.elements[element].corners) sum += mesh.nodes[corner].position;
+  return sum / double(mesh.elements[element].corners.size());
+}
+
+}  // namespace
+
+void exerciseMesh(const RadiosityMesh& mesh) {
+  const MeshTopology topology(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh);
+  const RadiosityMesh repaired = repairTVertices(mesh);
+  for (size_t m = 0; m < methodNames().size(); ++m) {
+    const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, Method(m));
+    for (size_t e = 0; e < mesh.elements.size(); ++e) {
+      const Sample s = interpolant->evaluate(uint32_t(e), cornerMean(mesh, e));
+      if (!finite(s)) {
+        std::fprintf(stderr, "fuzz: %s interpolant is not finite at element %zu\n", methodNames()[m].c_str(), e);
+        std::abort();
+      }
+    }
+  }
+}
+
+bool openGltfBytes(const uint8_t* data, size_t size) {
+  const bool binary = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+  const fs::path path = privateDirectory() / (binary ? "input.glb" : "input.gltf");
+  {
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+    if (!file) {
+      std::fprintf(stderr, "fuzz: cannot write %s\n", path.c_str());
+      std::abort();
+    }
+  }
+  try {
+    const LoadedFile loaded = loadFile(path.string());
+    if (loaded.isSolution) {
+      exerciseMesh(loaded.mesh);
+    } else {
+      // Coarse, so that one input stays fast: about 8 elements along the scene's diagonal.
+      const Bounds bounds = loaded.scene.bounds();
+      if (bounds.empty()) return true;
+      exerciseMesh(meshAndLight(loaded.scene, glm::length(bounds.extent()) / 8.0));
+    }
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+bool buildMeshBytes(const uint8_t* data, size_t size) {
+  const RadiosityMesh mesh = decodeMesh(data, size);
+  try {
+    validateMesh(mesh, "fuzz input");
+    exerciseMesh(mesh);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+}  // namespace radview::fuzz

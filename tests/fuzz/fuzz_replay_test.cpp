@@ -1,0 +1,102 @@
+// The fuzz targets' bodies in the ordinary test build: every input that once crashed a
+// target (tests/fuzz/regressions/) is replayed, and the seeds the targets start from are
+// checked to be what they claim (valid files open, meshes survive their byte encoding).
+#include "mesh/load_file.h"
+#include "mesh/topology.h"
+#include "tests/fuzz/fuzz_inputs.h"
+#include "tests/fuzz/mesh_bytes.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace radview {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<uint8_t> readBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::vector<fs::path> filesIn(const fs::path& directory) {
+  std::vector<fs::path> files;
+  if (fs::is_directory(directory))
+    for (const fs::directory_entry& entry : fs::directory_iterator(directory))
+      if (entry.is_regular_file()) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+const fs::path kSource = RADVIEW_SOURCE_DIR;
+
+// A regression input passes when it no longer crashes, aborts or reports: refused or opened.
+TEST(FuzzRegressions, GltfInputsThatOnceCrashedAreHandled) {
+  for (const fs::path& file : filesIn(kSource / "tests/fuzz/regressions/gltf")) {
+    SCOPED_TRACE(file.string());
+    const std::vector<uint8_t> bytes = readBytes(file);
+    fuzz::openGltfBytes(bytes.data(), bytes.size());
+  }
+}
+
+TEST(FuzzRegressions, MeshInputsThatOnceCrashedAreHandled) {
+  for (const fs::path& file : filesIn(kSource / "tests/fuzz/regressions/mesh")) {
+    SCOPED_TRACE(file.string());
+    const std::vector<uint8_t> bytes = readBytes(file);
+    fuzz::buildMeshBytes(bytes.data(), bytes.size());
+  }
+}
+
+TEST(FuzzSeeds, BundledFilesOpenThroughTheGltfTargetAndBadOnesAreRefused) {
+  for (const fs::path& file : filesIn(kSource / "assets")) {
+    if (file.extension() != ".gltf") continue;
+    SCOPED_TRACE(file.string());
+    const std::vector<uint8_t> bytes = readBytes(file);
+    EXPECT_TRUE(fuzz::openGltfBytes(bytes.data(), bytes.size()));
+  }
+  for (const char* bad : {"tests/data/bad_accessor.gltf", "tests/data/truncated.glb"}) {
+    SCOPED_TRACE(bad);
+    const std::vector<uint8_t> bytes = readBytes(kSource / bad);
+    EXPECT_FALSE(fuzz::openGltfBytes(bytes.data(), bytes.size()));
+  }
+}
+
+// The mesh target's seeds are the bundled solutions in its byte encoding: they must decode to
+// valid meshes of the same structure, or the fuzzer would start from nothing.
+TEST(FuzzSeeds, BundledSolutionsSurviveTheMeshEncoding) {
+  int solutions = 0;
+  for (const fs::path& file : filesIn(kSource / "assets")) {
+    if (file.extension() != ".gltf") continue;
+    const LoadedFile loaded = loadFile(file.string());
+    if (!loaded.isSolution) continue;
+    SCOPED_TRACE(file.string());
+    ++solutions;
+    const RadiosityMesh& original = loaded.mesh;
+    const std::vector<uint8_t> bytes = fuzz::encodeMesh(original);
+    const RadiosityMesh decoded = fuzz::decodeMesh(bytes.data(), bytes.size());
+    ASSERT_NO_THROW(validateMesh(decoded, file.string()));
+    EXPECT_EQ(decoded.nodes.size(), original.nodes.size());
+    ASSERT_EQ(decoded.elements.size(), original.elements.size());
+    for (size_t e = 0; e < original.elements.size(); ++e) {
+      EXPECT_EQ(decoded.elements[e].corners, original.elements[e].corners);
+      EXPECT_EQ(decoded.elements[e].midEdge, original.elements[e].midEdge);
+    }
+    ASSERT_EQ(decoded.discontinuities.size(), original.discontinuities.size());
+    for (size_t d = 0; d < original.discontinuities.size(); ++d)
+      EXPECT_EQ(decoded.discontinuities[d].order, original.discontinuities[d].order);
+    // B to three significant digits of its largest channel, over 16 decades.
+    for (size_t n = 0; n < original.nodes.size(); ++n) {
+      const Rgb& b = original.nodes[n].B;
+      const double largest = std::max({b.r, b.g, b.b});
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(decoded.nodes[n].B[c], b[c], 5e-3 * largest + 1e-8);
+    }
+    EXPECT_TRUE(fuzz::buildMeshBytes(bytes.data(), bytes.size()));
+  }
+  EXPECT_GE(solutions, 4);
+}
+
+}  // namespace
+}  // namespace radview
