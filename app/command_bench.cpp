@@ -4,6 +4,7 @@
 #include "app/viewed_file.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
+#include "core/atomic_file.h"
 #include "core/camera.h"
 #include "core/display_transform.h"
 #include "core/error.h"
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace radview {
@@ -81,12 +81,6 @@ std::vector<char> interiorPixels(const RadiosityMesh& mesh, const std::vector<in
                     samePlane(elementAt[p], elementAt[p - width]) && samePlane(elementAt[p], elementAt[p + width]);
     }
   return interior;
-}
-
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw Error(path, "cannot write");
 }
 
 }  // namespace
@@ -263,8 +257,8 @@ int runBench(const BenchOptions& options) {
          << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
          << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames << " frames.\n\n";
   const std::string table = markdownTable(rows);
-  writeText(options.outDir + "/bench.md", header.str() + table);
-  writeText(options.outDir + "/bench.csv", csvTable(rows));
+  writeFileAtomically(options.outDir + "/bench.md", header.str() + table);
+  writeFileAtomically(options.outDir + "/bench.csv", csvTable(rows));
   const std::string title = std::filesystem::path(options.file).filename().string() + ", " + options.size;
   if (!writeTradeoffPlot(rows, title, options.outDir + "/bench.png"))
     std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");

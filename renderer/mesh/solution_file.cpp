@@ -1,5 +1,6 @@
 #include "mesh/solution_file.h"
 
+#include "core/atomic_file.h"
 #include "core/display_transform.h"
 #include "core/error.h"
 #include "core/strings.h"
@@ -11,8 +12,6 @@
 #include <array>
 #include <climits>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace radview {
@@ -586,17 +585,13 @@ void writeSolution(const RadiosityMesh& mesh, const std::string& path) {
     throw Error(path, "the mesh is too large for a glTF file");
   const tinygltf::Model model = SolutionWriter(mesh, path).build();
 
-  // Written through a stream rather than WriteGltfSceneToFile, which ignores failed writes.
+  // Serialized in memory rather than by WriteGltfSceneToFile, which ignores failed writes and
+  // truncates the old file before it knows the new one can be written.
   std::ostringstream bytes;
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/true, /*writeBinary=*/ext == ".glb"))
     throw Error(path, "tinygltf could not serialize the solution");
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw Error(path, "cannot open the file for writing");
-  const std::string data = bytes.str();
-  file.write(data.data(), std::streamsize(data.size()));
-  file.close();
-  if (!file) throw Error(path, "writing the file failed");
+  writeFileAtomically(path, bytes.str());
 }
 
 bool isSolution(const GltfDocument& document) {
