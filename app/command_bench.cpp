@@ -99,7 +99,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
       ->capture_default_str();
   command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
-      ->check(CLI::Range(1, 1000))
+      ->check(CLI::Range(1, kMaxBenchFrames))
       ->capture_default_str();
   command->add_option("--levels", o.levels, "Tessellation levels, comma-separated, 1..64")->capture_default_str();
   command->add_option("--tolerances", o.tolerances, "Adaptive tessellation tolerances, 8-bit steps, comma-separated")
