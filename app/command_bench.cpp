@@ -4,6 +4,7 @@
 #include "app/viewed_file.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
+#include "core/atomic_file.h"
 #include "core/camera.h"
 #include "core/display_transform.h"
 #include "core/error.h"
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace radview {
@@ -83,12 +83,6 @@ std::vector<char> interiorPixels(const RadiosityMesh& mesh, const std::vector<in
   return interior;
 }
 
-void writeText(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  out << text;
-  if (!out) throw Error(path, "cannot write");
-}
-
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
@@ -105,7 +99,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
       ->capture_default_str();
   command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
-      ->check(CLI::Range(1, 1000))
+      ->check(CLI::Range(1, kMaxBenchFrames))
       ->capture_default_str();
   command->add_option("--levels", o.levels, "Tessellation levels, comma-separated, 1..64")->capture_default_str();
   command->add_option("--tolerances", o.tolerances, "Adaptive tessellation tolerances, 8-bit steps, comma-separated")
@@ -263,8 +257,8 @@ int runBench(const BenchOptions& options) {
          << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
          << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames << " frames.\n\n";
   const std::string table = markdownTable(rows);
-  writeText(options.outDir + "/bench.md", header.str() + table);
-  writeText(options.outDir + "/bench.csv", csvTable(rows));
+  writeFileAtomically(options.outDir + "/bench.md", header.str() + table);
+  writeFileAtomically(options.outDir + "/bench.csv", csvTable(rows));
   const std::string title = std::filesystem::path(options.file).filename().string() + ", " + options.size;
   if (!writeTradeoffPlot(rows, title, options.outDir + "/bench.png"))
     std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");

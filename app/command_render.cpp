@@ -2,11 +2,13 @@
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/image_difference.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "interp/tessellation_level.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <regex>
@@ -15,12 +17,13 @@ namespace radview {
 
 void parseSize(const std::string& text, int& width, int& height) {
   std::smatch m;
-  static const std::regex pattern(R"((\d{1,5})x(\d{1,5}))");
+  // Up to 9 digits: anything longer is past the limit anyway, and stoi cannot overflow.
+  static const std::regex pattern(R"((\d{1,9})x(\d{1,9}))");
   if (!std::regex_match(text, m, pattern)) throw Error("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1024x768");
   width = std::stoi(m[1]);
   height = std::stoi(m[2]);
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    throw Error("--size '" + text + "': each side must be within 1..16384");
+  if (width < 1 || height < 1) throw Error("--size '" + text + "': each side must be at least 1 pixel");
+  checkLimit("--size " + text, uint64_t(std::max(width, height)), kMaxImageSide, "pixels on a side");
 }
 
 gl::RenderSettings settingsFrom(const DisplayOptions& display) {
@@ -67,7 +70,8 @@ int parseTessellation(const std::string& text) {
     used = 0;
   }
   if (used != text.size() || level < 1 || level > kMaxTessellationLevel)
-    throw Error("--tessellation '" + text + "': expected exact, adaptive or a level 1..64");
+    throw Error("--tessellation '" + text + "': expected exact, adaptive or a level 1.." +
+                std::to_string(kMaxTessellationLevel));
   return level;
 }
 

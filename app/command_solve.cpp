@@ -1,6 +1,7 @@
 #include "app/command_solve.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/parallel_for.h"
 #include "interp/t_vertex_repair.h"
 #include "mesh/load_file.h"
@@ -115,7 +116,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
                       "Subdivision splits no element below this size (default: the patch size / 16)")
       ->check(CLI::Range(1e-12, 1e12));
   command->add_option("--max-elements", o.maxElements, "Subdivision stops at this many elements")
-      ->check(CLI::Range(size_t(1), kMaxUniformElements))
+      ->check(CLI::Range(size_t(1), kMaxMeshElements))
       ->capture_default_str();
   command->add_option("--tolerance", o.tolerance,
                       "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
@@ -128,13 +129,13 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   command->add_option("--seed", o.seed, "Seed of the shooter sampling (same seed, same solution)")
       ->capture_default_str();
   command->add_option("--samples", o.samples, "Shooter samples per node and shot")
-      ->check(CLI::Range(1, 4096))
+      ->check(CLI::Range(1, kMaxSolverSamples))
       ->capture_default_str();
   command->add_option("--unshot", o.unshot, "Stop once the unshot power is this fraction of the emitted power")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   command->add_option("--max-shots", o.maxShots, "Stop after this many shots in any case")
-      ->check(CLI::Range(size_t(1), size_t(100000000)))
+      ->check(CLI::Range(size_t(1), kMaxSolverShots))
       ->capture_default_str();
   command->add_flag("--discontinuity-meshing", o.discontinuityMeshing,
                     "Patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "

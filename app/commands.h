@@ -1,6 +1,7 @@
 #pragma once
 // The subcommands, each a plain options struct filled by CLI11 in main.cpp and a run
 // function that returns the exit status. Errors are thrown as radview::Error.
+#include "core/limits.h"
 #include "gl/mesh_renderer.h"
 
 #include <cstdint>
@@ -40,8 +41,6 @@ struct GatherOptions {
   std::string givenWithGlMethod;      // a gather option given without final-gather, for the error
 };
 constexpr const char* kFinalGather = "final-gather";  // the --method that renders by final gather
-constexpr int kMaxGatherSpp = 65536;
-constexpr int kMaxEmitterSamples = 1024;
 
 struct RenderOptions {
   std::string file;

@@ -14,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -107,6 +108,9 @@ void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& sp
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file size limit (ulimit -f) a write then fails with EFBIG, which radview reports with
+  // the old file left intact (core/atomic_file.h), instead of SIGXFSZ killing it mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"radview: a viewer for radiosity solutions (Cohen & Wallace §9.2-9.3).\n"
                "radview [FILE] opens the viewer (the bundled Cornell box without FILE); where no display\n"
                "exists it renders FILE headless to radview-<name>.png instead.",

@@ -1,6 +1,7 @@
 #include "bench/tradeoff.h"
 
 #include "core/error.h"
+#include "core/image.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -125,12 +126,12 @@ bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& 
     text(px(front[i]->frameMs) + 7, py(front[i]->displayRmse) - 6 - 15 * int(i % 4),
          front[i]->method + " " + front[i]->setting, 13, red);
 
-  const std::filesystem::path target(path);
-  const std::filesystem::path temporary = target.string() + ".part.png";
-  if (!plot.write(temporary.string())) throw Error(path, "cannot write the plot: " + plot.geterror());
-  std::error_code ec;
-  std::filesystem::rename(temporary, target, ec);
-  if (ec) throw Error(path, "cannot write the plot: " + ec.message());
+  Image rgba{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};
+  std::vector<uint8_t> rgb(size_t(W) * H * 3);
+  plot.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb.data());
+  for (size_t i = 0; i < size_t(W) * H; ++i)
+    for (int c = 0; c < 3; ++c) rgba.rgba[4 * i + c] = rgb[3 * i + c];
+  writePng(rgba, path);
   return labels;
 }
 

@@ -1,7 +1,9 @@
 #include "core/image.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imageio.h>
 
@@ -9,14 +11,23 @@ namespace radview {
 
 namespace {
 
-// RGBA pixels of type T (UINT8 or FLOAT as `type`) to any format OpenImageIO writes.
+// RGBA pixels of type T (UINT8 or FLOAT as `type`) to any format OpenImageIO encodes in memory
+// (the extension of `path` picks it), then to the file through writeFileAtomically: OpenImageIO
+// writing the file itself would leave a truncated one behind when a write fails.
 template <typename T>
 void writeRgba(const std::string& path, int width, int height, OIIO::TypeDesc type, const std::vector<T>& rgba) {
   auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw Error(path, "cannot write an image here: " + OIIO::geterror());
+  if (!out) throw Error(path, "cannot write an image here: " + OIIO::geterror() + "; no file was written");
+  if (!out->supports("ioproxy"))
+    throw Error(path, std::string("OpenImageIO cannot encode ") + out->format_name() +
+                          " images in memory, which radview's safe writes need; no file was written");
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
   OIIO::ImageSpec spec(width, height, 4, type);
-  if (!out->open(path, spec) || !out->write_image(type, rgba.data()) || !out->close())
-    throw Error(path, "cannot write image: " + out->geterror());
+  if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(type, rgba.data()) ||
+      !out->close())
+    throw Error(path, "cannot encode the image: " + out->geterror() + "; no file was written");
+  writeFileAtomically(path, std::string(encoded.begin(), encoded.end()));
 }
 
 // Any file OpenImageIO reads as RGBA pixels of type T: gray, gray+alpha, RGB or RGBA, alpha

@@ -18,7 +18,9 @@ struct LinearImage {
   std::vector<float> rgba;  // row 0 is the top row
 };
 
-void writePng(const Image& image, const std::string& path);  // throws Error naming the path
+// Image files are written whole or not at all (core/atomic_file.h): a failed write throws Error
+// naming the path and leaves any file that was there unchanged.
+void writePng(const Image& image, const std::string& path);
 Image readImage(const std::string& path);                     // any format OpenImageIO reads, as RGBA8
 // Linear radiosity as a float file (OpenEXR for .exr; any float format OpenImageIO writes),
 // alpha kept as coverage. Throws Error naming the path.

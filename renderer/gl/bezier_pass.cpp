@@ -1,7 +1,10 @@
 #include "gl/bezier_pass.h"
 
+#include "core/limits.h"
+
 #include <algorithm>
 #include <cstddef>
+#include <string>
 
 namespace radview::gl {
 
@@ -23,6 +26,10 @@ std::array<Rgb, 10> netOf(const BezierVertex& vertex) {
 // Triangles equal-spacing tessellation makes of a triangle whose levels are at most L, bounded
 // above.
 size_t trianglesAt(int L) { return size_t(L) * L + 3 * size_t(L); }
+
+size_t trianglesOf(const TessellationLevels& l) {
+  return trianglesAt(std::max({l.inner, l.outer[0], l.outer[1], l.outer[2]}));
+}
 
 }  // namespace
 
@@ -113,6 +120,7 @@ void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
   const std::array<double, 3> key = {double(evaluation.tessellation), evaluation.exposureScale, evaluation.tolerance};
   if (key == levelsFor_) return;
   const size_t patches = vertices_.size() / 3;
+  std::vector<TessellationLevels> levels;
   if (evaluation.tessellation == kAdaptiveTessellation) {
     std::vector<std::array<Vec3, 3>> corners(patches);
     std::vector<std::array<Rgb, 10>> nets(patches);
@@ -122,11 +130,21 @@ void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
       nets[p] = netOf(vertices_[3 * p]);
       netPointers[p] = nets[p].data();
     }
-    levels_ = tessellationLevelsForPieces(degree_, corners, netPointers, evaluation.exposureScale, evaluation.tolerance);
+    levels = tessellationLevelsForPieces(degree_, corners, netPointers, evaluation.exposureScale, evaluation.tolerance);
   } else {
     const int L = evaluation.tessellation;
-    levels_.assign(patches, TessellationLevels{{L, L, L}, L});
+    levels.assign(patches, TessellationLevels{{L, L, L}, L});
   }
+  // Before anything is drawn, and before levels_ changes (it must stay what levelsVbo_ holds): a
+  // fine level over a large mesh would keep the GPU busy for hours.
+  uint64_t triangles = 0;
+  for (const TessellationLevels& l : levels) triangles += trianglesOf(l);
+  checkLimit("--tessellation " + (evaluation.tessellation == kAdaptiveTessellation
+                                      ? std::string("adaptive")
+                                      : std::to_string(evaluation.tessellation)),
+             triangles, kMaxTessellatedTriangles,
+             "triangles a frame from " + std::to_string(patches) + " Bezier pieces");
+  levels_ = std::move(levels);
   std::vector<glm::vec4> perVertex;
   perVertex.reserve(3 * patches);
   for (const TessellationLevels& l : levels_)
@@ -144,14 +162,10 @@ double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& d
   glPatchParameteri(GL_PATCH_VERTICES, 3);
   size_t first = 0;
   double levelSum = 0.0;
-  auto trianglesOf = [&](size_t p) {
-    const TessellationLevels& l = levels_[p];
-    return trianglesAt(std::max({l.inner, l.outer[0], l.outer[1], l.outer[2]}));
-  };
   while (first < patches) {
     size_t count = 0, triangles = 0;
-    while (first + count < patches && (count == 0 || triangles + trianglesOf(first + count) <= kMaxTrianglesPerDraw)) {
-      triangles += trianglesOf(first + count);
+    while (first + count < patches && (count == 0 || triangles + trianglesOf(levels_[first + count]) <= kMaxTrianglesPerDraw)) {
+      triangles += trianglesOf(levels_[first + count]);
       levelSum += levels_[first + count].inner;
       ++count;
     }

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/strings.h"
 
+#include <algorithm>
 #include <string>
 
 namespace radview::gl {
@@ -40,11 +41,17 @@ void RenderTargets::release() {
 
 void RenderTargets::resize(int width, int height) {
   if (width == width_ && height == height_ && linearFbo_) return;
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
-    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) + " is outside 1.." +
-                std::to_string(maxSize) + " (this OpenGL's largest texture)");
+  // The targets are textures attached to framebuffers: both of this context's limits apply, on
+  // top of radview's own (core/limits.h, checked where the size is given).
+  GLint maxTexture = 0, maxWidth = 0, maxHeight = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &maxWidth);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &maxHeight);
+  if (width <= 0 || height <= 0 || width > std::min(maxTexture, maxWidth) || height > std::min(maxTexture, maxHeight))
+    throw Error("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                " is more than this OpenGL can draw into: " + std::to_string(std::min(maxTexture, maxWidth)) + "x" +
+                std::to_string(std::min(maxTexture, maxHeight)) +
+                " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT)");
   release();
   linearColor_ = texture(GL_RGBA32F, width, height);
   displayColor_ = texture(GL_RGBA8, width, height);

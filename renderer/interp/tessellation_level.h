@@ -27,6 +27,7 @@
 // lies in the hull of its net), and zero once that is saturated (s min b >= 1).
 //
 // The level is the smallest L with that display error <= tolerance, clamped to 1..64.
+#include "core/limits.h"
 #include "core/types.h"
 
 #include <array>
@@ -42,8 +43,6 @@ struct TessellationLevels {
 // `net`: the (n+1)(n+2)/2 control values in bezierIndex order (n = 1, 2 or 3).
 TessellationLevels adaptiveTessellationLevels(int degree, const Rgb* net, double exposureScale,
                                               double tolerance);
-
-inline constexpr int kMaxTessellationLevel = 64;
 
 // The levels of every piece of a set that tile surfaces (3 corners each, pieces sharing an
 // edge share its corner positions): each piece's own, with every shared edge's outer level

@@ -1,7 +1,9 @@
 #include "mesh/solution_file.h"
 
+#include "core/atomic_file.h"
 #include "core/display_transform.h"
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/strings.h"
 #include "geom/polygon.h"
 
@@ -11,8 +13,6 @@
 #include <array>
 #include <climits>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace radview {
@@ -333,6 +333,9 @@ class SolutionReader {
            " is not supported (this radview reads version " + std::to_string(kFormatVersion) + ")");
     const uint64_t nodeCount = uint64_t(integer(ext, "nodeCount", kSolutionExtension));
     const uint64_t elementCount = uint64_t(integer(ext, "elementCount", kSolutionExtension));
+    checkLimit(doc_.path(), nodeCount, kMaxSolutionNodes, "nodes (" + std::string(kSolutionExtension) + ".nodeCount)");
+    checkLimit(doc_.path(), elementCount, kMaxSolutionElements,
+               "elements (" + std::string(kSolutionExtension) + ".elementCount)");
     if (!ext.Has("hasGradients") || !ext.Get("hasGradients").IsBool())
       fail(std::string(kSolutionExtension) + ": hasGradients is not a boolean");
     mesh_.hasGradients = ext.Get("hasGradients").Get<bool>();
@@ -349,6 +352,9 @@ class SolutionReader {
                                            nodeCount, elementCount));
         vertices += primitives.back().vertices.size();
         elements += primitives.back().elements.size();
+        // Primitives may share accessors, so a small file could list the same data many times.
+        checkLimit(doc_.path(), vertices, kMaxStoredVertices, "vertices in the primitives");
+        checkLimit(doc_.path(), elements, kMaxSolutionElements, "elements in the primitives");
       }
     if (nodeCount > vertices)
       fail(std::string(kSolutionExtension) + ": nodeCount " + std::to_string(nodeCount) +
@@ -466,6 +472,10 @@ class SolutionReader {
         fail(extWhat + ".cornerOffsets: element " + std::to_string(k) + " spans offsets " +
              std::to_string(offsets[k]) + " -> " + std::to_string(offsets[k + 1]) +
              "; they must increase by at least 3 per element");
+      if (offsets[k + 1] - offsets[k] > kMaxElementCorners)
+        fail(extWhat + ".cornerOffsets: element " + std::to_string(k) + " has " +
+             std::to_string(offsets[k + 1] - offsets[k]) + " corners, more than radview's limit of " +
+             std::to_string(kMaxElementCorners));
       if (orders[k] != 1.0 && orders[k] != 2.0)
         fail(extWhat + ".order: element " + std::to_string(k) + " has order " + std::to_string(int(orders[k])) +
              " (expected 1 or 2)");
@@ -537,6 +547,7 @@ class SolutionReader {
     const std::vector<double> orders =
         doc_.readAccessor(integer(ext, "discontinuityOrders", kSolutionExtension),
                           {std::string(kSolutionExtension) + ".discontinuityOrders", 1, kByte, false});
+    checkLimit(doc_.path(), orders.size(), kMaxDiscontinuityEdges, "discontinuity edges");
     if (nodes.size() != 2 * orders.size())
       fail(what + " has " + std::to_string(nodes.size()) + " nodes for " + std::to_string(orders.size()) +
            " edges (expected 2 per edge)");
@@ -582,21 +593,22 @@ void writeSolution(const RadiosityMesh& mesh, const std::string& path) {
     throw Error(path, "unknown solution file type \"" + ext + "\" (radview writes .glb and .gltf)");
   validateMesh(mesh, path);
   if (mesh.elements.empty()) throw Error(path, "the mesh has no element to write");
-  if (mesh.nodes.size() >= size_t(INT_MAX) || mesh.elements.size() >= size_t(INT_MAX))
-    throw Error(path, "the mesh is too large for a glTF file");
+  // Never a file that radview would refuse to read.
+  checkLimit(path, mesh.nodes.size(), kMaxSolutionNodes, "nodes");
+  checkLimit(path, mesh.elements.size(), kMaxSolutionElements, "elements");
+  checkLimit(path, mesh.discontinuities.size(), kMaxDiscontinuityEdges, "discontinuity edges");
+  for (size_t e = 0; e < mesh.elements.size(); ++e)
+    checkLimit(path, mesh.elements[e].corners.size(), kMaxElementCorners,
+               "corners in element " + std::to_string(e));
   const tinygltf::Model model = SolutionWriter(mesh, path).build();
 
-  // Written through a stream rather than WriteGltfSceneToFile, which ignores failed writes.
+  // Serialized in memory rather than by WriteGltfSceneToFile, which ignores failed writes and
+  // truncates the old file before it knows the new one can be written.
   std::ostringstream bytes;
   tinygltf::TinyGLTF writer;
   if (!writer.WriteGltfSceneToStream(&model, bytes, /*prettyPrint=*/true, /*writeBinary=*/ext == ".glb"))
     throw Error(path, "tinygltf could not serialize the solution");
-  std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) throw Error(path, "cannot open the file for writing");
-  const std::string data = bytes.str();
-  file.write(data.data(), std::streamsize(data.size()));
-  file.close();
-  if (!file) throw Error(path, "writing the file failed");
+  writeFileAtomically(path, bytes.str());
 }
 
 bool isSolution(const GltfDocument& document) {

@@ -16,7 +16,8 @@ inline constexpr const char* kSolutionExtension = "RADVIEW_radiosity_mesh";
 
 // Writes `mesh` to `path`: binary glTF for .glb, JSON with a data: URI buffer for .gltf.
 // Throws Error(path, ...) if the mesh fails validateMesh, has no element, has a value that
-// does not fit in float32, or the file cannot be written.
+// does not fit in float32, or the file cannot be written (then any file that was at `path` is
+// left unchanged: core/atomic_file.h).
 void writeSolution(const RadiosityMesh& mesh, const std::string& path);
 
 // True when the document carries the root RADVIEW_radiosity_mesh extension.

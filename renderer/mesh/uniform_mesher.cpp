@@ -59,7 +59,7 @@ PolygonPlan planPolygon(const std::vector<Vec3>& v) {
 // or 0 if none does (more polygons than the cap). The count only falls as the size grows
 // (every ceil does), so bisection finds it; geometric, as the sizes may span many decades.
 double sizeThatFits(const std::vector<PolygonPlan>& plans, double elementSize) {
-  auto fits = [&](double size) { return elementCount(plans, size) <= double(kMaxUniformElements); };
+  auto fits = [&](double size) { return elementCount(plans, size) <= double(kMaxMeshElements); };
   double enough = 0.0;  // no edge longer than this: every polygon gets its fewest elements
   for (const PolygonPlan& plan : plans)
     enough = std::max({enough, plan.lengthU, plan.lengthV, plan.longestEdge});
@@ -171,10 +171,10 @@ RadiosityMesh meshUniformly(const Scene& scene, double elementSize) {
     }
   }
   const double total = elementCount(plans, elementSize);
-  if (total > double(kMaxUniformElements)) {
+  if (total > double(kMaxMeshElements)) {
     std::ostringstream os;
-    os << "element size " << elementSize << " gives " << countText(total) << " elements, more than the "
-       << kMaxUniformElements << " allowed; ";
+    os << "element size " << elementSize << " gives " << countText(total)
+       << " elements, more than radview's limit of " << kMaxMeshElements << "; ";
     const double fitting = sizeThatFits(plans, elementSize);
     if (fitting > 0.0) {
       os << "an element size of " << fitting << " or more fits";

@@ -1,15 +1,13 @@
 #pragma once
 // The first mesh of a scene (README, "a first radiosity-like solution"): every polygon meshed
 // uniformly into elements of a chosen size, quads into quads and triangles into triangles.
+#include "core/limits.h"
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 
 #include <cstddef>
 
 namespace radview {
-
-// More elements than this and meshUniformly refuses the size (memory and solve time).
-constexpr size_t kMaxUniformElements = 2'000'000;
 
 // Meshes every polygon on its own, into linear elements with edges of at most about
 // elementSize:
@@ -22,7 +20,7 @@ constexpr size_t kMaxUniformElements = 2'000'000;
 // Element.surface is the polygon's index, Element.material its material; the mesh's materials
 // are the scene's. Zero-area polygons get no elements (they receive and emit nothing).
 // Throws Error for a size that is not positive and finite, a self-intersecting polygon, or
-// more than kMaxUniformElements elements (naming a size that fits).
+// more than kMaxMeshElements elements (naming a size that fits).
 RadiosityMesh meshUniformly(const Scene& scene, double elementSize);
 
 }  // namespace radview

@@ -1,6 +1,7 @@
 #include "scene/gltf_document.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/strings.h"
 
 #include <tiny_gltf.h>
@@ -23,12 +24,6 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
 namespace {
 
 namespace fs = std::filesystem;
-
-// tinygltf takes lengths as unsigned int and indexes with int in places; 2 GiB keeps clear of both.
-constexpr uint64_t kMaxFileBytes = uint64_t(1) << 31;
-// An accessor without a bufferView is all zeros (possibly overridden by sparse values); its
-// count costs memory but no file bytes, so it is the one count a file could inflate at will.
-constexpr uint64_t kMaxZeroFilledCount = uint64_t(1) << 24;
 
 // Extensions a file may list in extensionsRequired. Anything that changes geometry or the
 // diffuse colour and that radview does not decode must stop the load instead.
@@ -247,13 +242,16 @@ class AccessorReader {
     const uint64_t elementSize = components * type->size;
     const uint64_t count = accessor.count;
     if (count == 0) fail("count is 0 (glTF requires at least 1)");
+    if (count > kMaxAccessorElements)
+      fail("count " + std::to_string(count) + ", more than radview's limit of " +
+           std::to_string(kMaxAccessorElements) + " elements");
 
     std::vector<double> values;
     if (accessor.bufferView < 0) {
       if (accessor.byteOffset != 0) fail("has a byteOffset but no bufferView");
       if (count > kMaxZeroFilledCount)
-        fail("has no bufferView and a count of " + std::to_string(count) + ", more than radview accepts (" +
-             std::to_string(kMaxZeroFilledCount) + ")");
+        fail("has no bufferView and a count of " + std::to_string(count) + ", more than radview's limit of " +
+             std::to_string(kMaxZeroFilledCount) + " for such accessors");
       values.assign(count * components, 0.0);  // the spec: no bufferView means zeros
     } else {
       if (accessor.byteOffset % type->size != 0)
@@ -411,7 +409,7 @@ GltfDocument::GltfDocument(const std::string& path)
   const uintmax_t size = fs::file_size(path, ec);
   if (ec) throw Error(path, "cannot read the file size: " + ec.message());
   if (size == 0) throw Error(path, "the file is empty");
-  if (size > kMaxFileBytes) throw Error(path, "the file is larger than 2 GiB");
+  checkLimit(path, size, kMaxFileBytes, "bytes");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skipImage, nullptr);

@@ -1,6 +1,7 @@
 #include "scene/gltf_import.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 
 #include <glm/gtc/constants.hpp>
 #include <tiny_gltf.h>
@@ -17,19 +18,9 @@
 namespace radview {
 
 namespace {
-// Every triangle becomes at least one element, and meshes beyond kMaxUniformElements are
-// refused anyway; refusing at import keeps a small file with many instances from exhausting
-// memory first.
-constexpr size_t kMaxImportedTriangles = 2'000'000;
-}  // namespace
-
-namespace {
 
 using Mat4 = glm::dmat4;
 
-// Deeper node chains than this are refused rather than walked: no modelling tool makes them,
-// and a generated file that does is more likely an attack than a scene.
-constexpr int kMaxNodeDepth = 1024;
 // A triangle whose doubled area is below this fraction of its longest edge squared is taken
 // as degenerate: repeated vertices and exactly collinear ones, up to double rounding.
 constexpr double kDegenerateRatio = 1e-10;
@@ -249,8 +240,8 @@ class SceneImporter {
         ++degenerateTriangles_;
         return;
       }
-      if (scene_.polygons.size() >= kMaxImportedTriangles)
-        fail("more than " + std::to_string(kMaxImportedTriangles) +
+      if (scene_.polygons.size() >= kMaxSceneTriangles)
+        fail("more than " + std::to_string(kMaxSceneTriangles) +
              " triangles after instancing; radview does not mesh scenes that large");
       scene_.polygons.push_back({{pa, pb, pc}, material});
     };

@@ -114,11 +114,11 @@ RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, Di
   double totalArea = 0.0;
   for (const Polygon& p : scene.polygons) totalArea += area(p.vertices);
   const double estimate = totalArea * trianglesPerArea(elementSize);
-  if (estimate > double(kMaxUniformElements)) {
+  if (estimate > double(kMaxMeshElements)) {
     std::ostringstream os;
-    os << "element size " << elementSize << " gives about " << std::llround(estimate) << " elements, more than the "
-       << kMaxUniformElements << " allowed; an element size of "
-       << elementSize * std::sqrt(estimate / double(kMaxUniformElements)) * 1.01 << " or more fits";
+    os << "element size " << elementSize << " gives about " << std::llround(estimate)
+       << " elements, more than radview's limit of " << kMaxMeshElements << "; an element size of "
+       << elementSize * std::sqrt(estimate / double(kMaxMeshElements)) * 1.01 << " or more fits";
     throw Error(os.str());
   }
 

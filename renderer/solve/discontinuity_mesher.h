@@ -37,7 +37,7 @@ struct DiscontinuityMeshReport {
 // a C-1 edge each side has its own nodes (at the same positions); C0 and C1 edges share them.
 // Polygon vertices keep their exact positions; other nodes lie on the polygon's plane
 // (planeFrame). Zero-area polygons get no elements. Throws Error for a size that is not
-// positive and finite or that would give more than kMaxUniformElements elements.
+// positive and finite or that would give more than kMaxMeshElements elements.
 // `report` may be null.
 RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, DiscontinuityMeshReport* report);
 

@@ -6,6 +6,7 @@
 // where they meet the boundary (which gets those points as vertices). Without this, two
 // events computed along the same line in different ways (an EV and a VE wedge of parallel
 // edges) would differ by rounding and leave triangles 1e-16 wide.
+#include "core/limits.h"
 #include "geom/constrained_mesh_cgal.h"
 #include "solve/discontinuity_events.h"
 
@@ -13,11 +14,6 @@
 #include <vector>
 
 namespace radview {
-
-// At most this many merged segments per polygon: the arrangement is quadratic in them and
-// each adds elements. Past it the strongest orders are kept (C-1, then C0, then C1), longer
-// first within an order; the rest are dropped and counted.
-constexpr size_t kMaxSegmentsPerPolygon = 1000;
 
 struct SegmentArrangement {
   PlanarGraph graph;                     // boundary ring (from the outline) and the segments

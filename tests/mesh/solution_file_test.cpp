@@ -3,6 +3,7 @@
 #include "mesh/solution_file.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "geom/polygon.h"
 #include "mesh/load_file.h"
 #include "scene/gltf_document.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -303,11 +305,49 @@ TEST_F(SolutionFileTest, DiscontinuityOrderOutOfRange) {
 
 TEST_F(SolutionFileTest, NodeCountLargerThanTheFileHolds) {
   const std::string file = damaged("count.gltf", [](tinygltf::Model& m) {
-    m.extensions[kSolutionExtension].Get<tinygltf::Value::Object>()["nodeCount"] =
-        tinygltf::Value(2000000000);
+    m.extensions[kSolutionExtension].Get<tinygltf::Value::Object>()["nodeCount"] = tinygltf::Value(1000000);
   });
-  EXPECT_NE(readError(file).find("nodeCount 2000000000 is more than the primitives store"),
-            std::string::npos);
+  EXPECT_NE(readError(file).find("nodeCount 1000000 is more than the primitives store"), std::string::npos);
+}
+
+// A hostile file: the counts in the extension, mere JSON numbers, declare billions; the data is
+// the sample's few hundred bytes. Refused by the limits (core/limits.h) before any allocation.
+TEST_F(SolutionFileTest, DeclaredCountsPastTheLimitsAreRefused) {
+  for (const char* key : {"nodeCount", "elementCount"}) {
+    const std::string file = damaged(std::string(key) + ".gltf", [&](tinygltf::Model& m) {
+      m.extensions[kSolutionExtension].Get<tinygltf::Value::Object>()[key] = tinygltf::Value(2000000000);
+    });
+    const std::string message = readError(file);
+    EXPECT_NE(message.find(file + ": 2000000000 "), std::string::npos) << message;
+    EXPECT_NE(message.find(std::string("(RADVIEW_radiosity_mesh.") + key + "), more than radview's limit of " +
+                           std::to_string(std::string(key) == "nodeCount" ? kMaxSolutionNodes : kMaxSolutionElements)),
+              std::string::npos)
+        << message;
+  }
+}
+
+// The writer refuses what the reader would: here an element with more corners than the limit.
+TEST_F(SolutionFileTest, WriterRefusesAnElementPastTheCornerLimit) {
+  RadiosityMesh mesh;
+  mesh.materials = {{"white", Rgb(0.5), Rgb(0.0)}};
+  Element disc;
+  const int n = int(kMaxElementCorners) + 1;
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * M_PI * i / n;
+    mesh.nodes.push_back({Vec3(std::cos(a), std::sin(a), 0.0), Rgb(1.0)});
+    disc.corners.push_back(uint32_t(i));
+  }
+  mesh.elements = {disc};
+  const std::string file = path("disc.glb");
+  try {
+    writeSolution(mesh, file);
+    ADD_FAILURE() << "a 1025-corner element was written";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(file + ": 1025 corners in element 0, more than radview's limit of 1024"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(file));
 }
 
 TEST_F(SolutionFileTest, ElementStoredTwice) {

@@ -452,14 +452,32 @@ TEST_F(GltfImportTest, AccessorPastEndOfBufferView) {
 }
 
 // Counts and offsets near 2^64 (written as raw JSON: tinygltf's writer stores them as int) must
-// not wrap around into a range that looks valid.
+// not wrap around into a range that looks valid; a count past radview's limit is refused before
+// anything is read or allocated.
 TEST_F(GltfImportTest, HugeCountsAndOffsetsDoNotWrapAround) {
   const std::string asset = R"({"version": "2.0"})";
   EXPECT_ERROR_NAMES(errorOf(rawTriangle("count.gltf", asset, R"("count": 1537228672809129302)")),
-                     "count.gltf", "run past the end of bufferView 0");
+                     "count.gltf", "accessor 0: count 1537228672809129302, more than radview's limit of 67108864");
   EXPECT_ERROR_NAMES(
       errorOf(rawTriangle("offset.gltf", asset, R"("count": 3, "byteOffset": 18446744073709551612)")),
       "offset.gltf", "run past the end of bufferView 0");
+}
+
+// A hostile file: 36 bytes of data, accessors that declare billions of elements. Each is
+// refused by its limit (core/limits.h) with the file, the accessor and the limit named, at once.
+TEST_F(GltfImportTest, DeclaredCountsPastTheLimitsAreRefusedBeforeAnyAllocation) {
+  const std::string asset = R"({"version": "2.0"})";
+  EXPECT_ERROR_NAMES(errorOf(rawTriangle("huge.gltf", asset, R"("count": 3000000000)")), "huge.gltf",
+                     "POSITION: accessor 0: count 3000000000, more than radview's limit of 67108864 elements");
+  // Within the accessor limit but past the data: the data bounds it.
+  EXPECT_ERROR_NAMES(errorOf(rawTriangle("past.gltf", asset, R"("count": 67108864)")), "past.gltf",
+                     "67108864 elements of 12 bytes, stride 12, from byte 0 run past the end of bufferView 0");
+  // No bufferView: zeros that cost memory and no file bytes, so a lower limit.
+  GltfBuilder zeros = GltfBuilder::triangle();
+  zeros.model.accessors[0].bufferView = -1;
+  zeros.model.accessors[0].count = 20'000'000;
+  EXPECT_ERROR_NAMES(errorOf(zeros, "zeros.gltf"), "zeros.gltf",
+                     "has no bufferView and a count of 20000000, more than radview's limit of 16777216");
 }
 
 TEST_F(GltfImportTest, StrideSmallerThanElementIsRefused) {
