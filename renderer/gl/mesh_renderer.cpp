@@ -7,6 +7,8 @@
 #include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -144,7 +146,13 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 }
 
 void MeshRenderer::uploadMesh(bool repairTVertices) {
-  const RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(original_) : original_;
+  RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(original_) : original_;
+  // The GPU draws in float32, which resolves only 0.0078 at 1e5 from the origin: a scene there
+  // 1e-3 across collapsed to a few points (tests/gl/extremes_render_test.cpp). Its coordinates
+  // are taken relative to the mesh's centre, in double, before anything becomes float, and
+  // render() moves the camera's matrix by the same (camera-relative rendering, in effect).
+  origin_ = mesh.bounds().center();
+  for (Node& node : mesh.nodes) node.position -= origin_;
   const DisplayMesh display = buildDisplayMesh(mesh);
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
@@ -247,7 +255,7 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
   evaluation.exposureScale = std::exp2(settings.exposure);
   if (settings.surfaceHeight > 0.0) {
     evaluation.surfaceHeight = settings.surfaceHeight * mesh_.bounds().diagonal() / brightestLuminance_;
-    evaluation.eye = glm::vec3(camera.eye);
+    evaluation.eye = glm::vec3(camera.eye - origin_);
     if (evaluation.tessellation == 0) evaluation.tessellation = kAdaptiveTessellation;
   }
   return evaluation;
@@ -353,11 +361,22 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     }
   }
   glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
-  const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height));
+  // What the shaders call world is the mesh's frame (uploadMesh): world minus origin_. The
+  // product is formed in double, so only coordinates of the scene's own size reach float.
+  const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
+                                glm::translate(glm::dmat4(1.0), origin_));
 
   // Pass 1: linear radiosity and depth; for a difference view against another method, that
   // method first, into the comparison target.
   glViewport(0, 0, width, height);
+  // The surfaces' polygon offset (drawRadiosity) grows with their depth slope, which is
+  // unbounded at grazing angles: a floor seen 0.01 degree from edge-on was pushed past the far
+  // plane's depth along the horizon and lost a whole row of pixels to the background
+  // (tests/gl/extremes_render_test.cpp). Depth clamping keeps every fragment, and the depth range
+  // ends at 0.5 so that a clamped one still passes GL_LESS against the cleared 1.0. Clamping
+  // also stops near- and far-plane clipping: a surface nearer than zNear is still drawn.
+  glEnable(GL_DEPTH_CLAMP);
+  glDepthRange(0.0, 0.5);
   if (compareMethod) {
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
     RenderSettings comparison = settings;
@@ -446,6 +465,8 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     glDepthMask(GL_TRUE);
   }
   glEndQuery(GL_TIME_ELAPSED);
+  glDisable(GL_DEPTH_CLAMP);
+  glDepthRange(0.0, 1.0);
   ++frame_;
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

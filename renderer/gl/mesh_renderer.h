@@ -159,7 +159,8 @@ class MeshRenderer {
   bool comparedWithImage_ = false;  // what the last difference view used
   void uploadMesh(bool repairTVertices);
   RadiosityMesh original_;      // as set
-  RadiosityMesh mesh_;          // as drawn: the original, or with its T-vertices repaired
+  RadiosityMesh mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
+  Vec3 origin_{0.0};    // the world point at the origin of the coordinates the GPU sees
   double brightestLuminance_ = 1.0;  // of the non-emitting elements' nodes, for the surface view
   // The Bezier pass's settings for this frame.
   BezierEvaluation bezierEvaluation(const RenderSettings& settings, const Camera& camera) const;

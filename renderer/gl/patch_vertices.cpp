@@ -42,6 +42,13 @@ std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, s
   auto position = [&](uint32_t n) { return mesh.nodes[n].position; };
   auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
   std::vector<size_t> serendipity;
+  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, MeshTopology(mesh));
+  // A linear piece over each drawn triangle, T-vertices included (watertightTriangles).
+  auto addLinear = [&](size_t e) {
+    for (const auto& t : watertightTriangles(mesh, e, tVertices[e]))
+      addPiece(out, {position(t[0].node), position(t[1].node), position(t[2].node)},
+               linearBezierNet<6>({t[0].B, t[1].B, t[2].B}));
+  };
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& element = mesh.elements[e];
     if (isSerendipityQuad(mesh, e)) {
@@ -58,13 +65,10 @@ std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, s
       addPiece(out, {position(c[0]), position(c[1]), position(c[2])}, net);
       continue;
     }
-    for (const auto& t : elementTriangles(mesh, e))
-      addPiece(out, {position(t[0]), position(t[1]), position(t[2])}, linearBezierNet<6>({B(t[0]), B(t[1]), B(t[2])}));
+    addLinear(e);
   }
   if (serendipityStart) *serendipityStart = out.size() / 3;
-  for (size_t e : serendipity)
-    for (const auto& t : elementTriangles(mesh, e))
-      addPiece(out, {position(t[0]), position(t[1]), position(t[2])}, linearBezierNet<6>({B(t[0]), B(t[1]), B(t[2])}));
+  for (size_t e : serendipity) addLinear(e);
   return out;
 }
 

@@ -23,7 +23,7 @@ struct BezierVertex {
 
 // Quadratic Lagrange elements (C&W §9.2) as quadratic Bezier nets: a 6-node triangle with
 // corner values f_i and mid-edge values m_ij is the net b_200 = f_0, b_110 = 2 m_01 - (f_0 +
-// f_1) / 2, ... Other elements are drawn linear (over the triangles of elementTriangles), as
+// f_1) / 2, ... Other elements are drawn linear (over their watertightTriangles), as
 // the degree-2 net of a linear function. Serendipity quads (isSerendipityQuad) are not
 // triangle patches: their linear pieces come last, from piece *serendipityStart on, so the
 // per-pixel path can leave them to the polygon pass that evaluates them exactly, while the

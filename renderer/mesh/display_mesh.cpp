@@ -1,7 +1,6 @@
 #include "mesh/display_mesh.h"
 
 #include "geom/polygon.h"
-#include "mesh/topology.h"
 
 #include <algorithm>
 #include <set>
@@ -14,6 +13,12 @@ namespace {
 glm::vec3 toFloat(const Vec3& v) { return glm::vec3(v); }
 
 }  // namespace
+
+std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, const MeshTopology& topology) {
+  std::vector<std::vector<TVertex>> out(mesh.elements.size());
+  for (const TVertex& t : topology.tVertices()) out[t.element].push_back(t);
+  return out;
+}
 
 std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh, size_t element,
                                                       size_t firstCorner) {
@@ -35,6 +40,57 @@ std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh,
   return out;
 }
 
+std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
+                                                            const std::vector<TVertex>& tVertices) {
+  std::vector<std::array<DrawnCorner, 3>> triangles;
+  for (const auto& t : elementTriangles(mesh, element))
+    triangles.push_back({DrawnCorner{t[0], mesh.nodes[t[0]].B}, DrawnCorner{t[1], mesh.nodes[t[1]].B},
+                         DrawnCorner{t[2], mesh.nodes[t[2]].B}});
+  const Element& e = mesh.elements[element];
+  const size_t n = e.corners.size();
+  for (size_t k = 0; k < n; ++k) {
+    // The T-vertices on edge k, by their position along it.
+    std::vector<const TVertex*> along;
+    for (const TVertex& t : tVertices)
+      if (t.element == element && t.edge == k) along.push_back(&t);
+    if (along.empty()) continue;
+    std::sort(along.begin(), along.end(), [](const TVertex* a, const TVertex* b) { return a->t < b->t; });
+    // Nodes sharing a position (the two sides of a C-1 edge) are one point of the outline.
+    along.erase(std::unique(along.begin(), along.end(), [](const TVertex* a, const TVertex* b) { return a->t == b->t; }),
+                along.end());
+    const Vec3 A = mesh.nodes[e.corners[k]].position, AB = mesh.nodes[e.corners[(k + 1) % n]].position - A;
+    auto onEdge = [&](uint32_t node) {
+      return node == e.corners[k] || node == e.corners[(k + 1) % n] ||
+             (e.order() == ElementOrder::Quadratic && node == e.midEdge[k]);
+    };
+    auto tOf = [&](uint32_t node) { return glm::dot(mesh.nodes[node].position - A, AB) / glm::dot(AB, AB); };
+    // The triangles with a side on edge k (a linear element has one, a quadratic triangle two
+    // halves): each is fanned from its third corner through the T-vertices strictly inside it.
+    const size_t count = triangles.size();
+    for (size_t i = 0; i < count; ++i)
+      for (int s = 0; s < 3; ++s) {
+        const DrawnCorner u = triangles[i][s], v = triangles[i][(s + 1) % 3], w = triangles[i][(s + 2) % 3];
+        if (!onEdge(u.node) || !onEdge(v.node)) continue;
+        const double tu = tOf(u.node), tv = tOf(v.node);
+        std::vector<DrawnCorner> path{u};
+        auto add = [&](const TVertex* t) {
+          if (std::min(tu, tv) < t->t && t->t < std::max(tu, tv))
+            path.push_back({t->node, u.B + (v.B - u.B) * ((t->t - tu) / (tv - tu))});
+        };
+        if (tu < tv)
+          std::for_each(along.begin(), along.end(), add);
+        else
+          std::for_each(along.rbegin(), along.rend(), add);
+        if (path.size() == 1) continue;
+        path.push_back(v);
+        triangles[i] = {path[0], path[1], w};
+        for (size_t p = 1; p + 1 < path.size(); ++p) triangles.push_back({path[p], path[p + 1], w});
+        break;
+      }
+  }
+  return triangles;
+}
+
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
   DisplayMesh out;
   std::set<std::pair<uint32_t, uint32_t>> drawnEdges;
@@ -45,13 +101,14 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
     }
   };
 
+  const MeshTopology topology(mesh);
+  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& element = mesh.elements[e];
     const Rgb Bflat = mesh.meanB(e);
-    for (const auto& t : elementTriangles(mesh, e))
-      for (uint32_t node : t)
-        out.triangles.push_back(
-            {toFloat(mesh.nodes[node].position), toFloat(mesh.nodes[node].B), toFloat(Bflat), uint32_t(e)});
+    for (const auto& t : watertightTriangles(mesh, e, tVertices[e]))
+      for (const DrawnCorner& c : t)
+        out.triangles.push_back({toFloat(mesh.nodes[c.node].position), toFloat(c.B), toFloat(Bflat), uint32_t(e)});
     const auto& c = element.corners;
     const size_t n = c.size();
     for (size_t i = 0; i < n; ++i) {
@@ -69,7 +126,6 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
     out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.a].position), color});
     out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.b].position), color});
   }
-  const MeshTopology topology(mesh);
   for (const TVertex& t : topology.tVertices())
     out.tVertices.push_back({toFloat(mesh.nodes[t.node].position), kTVertexColor});
   return out;

@@ -3,6 +3,7 @@
 // the nodal radiosities, and the element edges as line segments. Built on the CPU once per
 // mesh; no OpenGL here.
 #include "mesh/radiosity_mesh.h"
+#include "mesh/topology.h"
 
 #include <glm/glm.hpp>
 
@@ -39,12 +40,34 @@ struct DisplayMesh {
   std::vector<OverlayVertex> tVertices;           // one marker each (MeshTopology::tVertices)
 };
 
-// Linear elements are triangulated over their corners (triangulatePolygon: a fan when
+// Elements are drawn as watertightTriangles. Linear elements are triangulated over their corners (triangulatePolygon: a fan when
 // strictly convex, else a constrained Delaunay triangulation, so a T-vertex listed as a
 // corner gets no zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
 // Gouraud shading passes through all six nodal values; other quadratic polygons are cut
 // over their corners only (their mid-edge values are shown by the higher-order methods).
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh);
+
+// A corner of a triangle the GPU draws of an element: at a node's position, with the value the
+// element itself has there (the node's own B, or at a neighbour's T-vertex the element's linear
+// interpolation along its edge).
+struct DrawnCorner {
+  uint32_t node = 0;
+  Rgb B{0.0};
+};
+
+// elementTriangles with the element's T-vertices (its list from tVerticesByElement) made corners of its outline, so that both sides of a T-junction are drawn through
+// the same vertices, while the element keeps its own interpolation: each triangle along an edge
+// with T-vertices is fanned through them from its opposite corner, and a T-vertex gets the value
+// interpolated linearly along that edge, where the triangle had it already (Gouraud, flat and the
+// per-pixel methods show the same picture). Without this the rasteriser, which snaps vertices to
+// its sub-pixel grid, can pass a pixel centre between the neighbour's edges through the T-vertex
+// and the element's straight edge: a single background pixel in a wall of the solved Cornell box
+// (C&W §9.2 on T-vertices; tests/gl/extremes_render_test.cpp).
+// MeshTopology's T-vertices, listed by the element whose edge each lies on.
+std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, const MeshTopology& topology);
+
+std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
+                                                            const std::vector<TVertex>& tVertices);
 
 // The triangles (node indices) buildDisplayMesh draws for one element. `firstCorner` starts
 // the corner-polygon triangulation at another corner: for a quad, 0 cuts along the diagonal
