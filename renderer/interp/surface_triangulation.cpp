@@ -57,15 +57,37 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
 }
 
 // Triangles of a simple polygon, as indices into it: orientation-independent (see header).
+// The points CGAL sees are a function of the polygon's shape alone, not of its size or place:
+// measured from the start corner along its outgoing edge, in units of the polygon's extent,
+// rounded to 2^-40 of it. A square's corners are cocircular, a tie of the Delaunay test, and
+// the positions' rounding decided it: the extreme box scaled by 1e-6 (not exact in binary) had
+// 411 of its triangles cut along the other diagonal, and the C1 methods built on them changed
+// by up to 10 times the element's largest value (scale_invariance_test). Rounded, near ties are
+// exact ties at every scale, broken by insertion order alone. 2^-40 of the extent is well above
+// double round-off (2^-52), and moving a vertex by half of it brings no two together: that is
+// far inside MeshTopology's weld distance (1e-7 of the mesh's diagonal).
 std::vector<std::array<int, 3>> delaunayTriangles(const std::vector<Vec3>& polygon) {
   if (polygon.size() == 3) return {{0, 1, 2}};
-  const PlaneFrame frame = planeFrame(polygon);
+  PlaneFrame frame = planeFrame(polygon);
   const size_t n = polygon.size();
   size_t start = 0;
   for (size_t i = 1; i < n; ++i)
     if (lexicographicallyLess(polygon[i], polygon[start])) start = i;
+  // The start corner's outgoing edge, not planeFrame's longest edge: two edges of one length
+  // (a square's) make that choice a matter of rounding. A zero edge keeps planeFrame's axis
+  // (CGAL then reports the coincident vertices).
+  const Vec3 edge = polygon[(start + 1) % n] - polygon[start];
+  const Vec3 inPlane = edge - glm::dot(edge, frame.n) * frame.n;
+  if (glm::length(inPlane) > 0.0) frame.u = glm::normalize(inPlane);
+  frame.v = glm::cross(frame.n, frame.u);
+  frame.origin = polygon[start];
   std::vector<Vec2> flat(n);
-  for (size_t i = 0; i < n; ++i) flat[i] = frame.project(polygon[(start + i) % n]);
+  double extent = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    flat[i] = frame.project(polygon[(start + i) % n]);
+    extent = std::max({extent, std::abs(flat[i].x), std::abs(flat[i].y)});
+  }
+  for (Vec2& p : flat) p = glm::round(std::ldexp(1.0, 40) / extent * p);
   std::vector<std::array<int, 3>> triangles = constrainedDelaunayTriangulation(flat);
   for (auto& t : triangles)
     for (int& v : t) v = static_cast<int>((v + start) % n);
@@ -126,10 +148,21 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh)
     const uint32_t reference = firstIsReference ? t0 : t1, other = firstIsReference ? t1 : t0;
     const int otherEdge = firstIsReference ? k1 : k0;
     const auto p0 = positions(reference);
+    const Vec3 far = positions(other)[(otherEdge + 2) % 3];
     const double size = glm::length(p0[1] - p0[0]) + glm::length(p0[2] - p0[1]);
     const Vec3 n0 = normal(reference);
-    const bool samePlane = glm::dot(n0, normal(other)) > 1.0 - 1e-9 &&
-                           std::abs(glm::dot(positions(other)[(otherEdge + 2) % 3] - p0[0], n0)) <= 1e-9 * size;
+    // Each position is only good to its rounding, delta = eps |x|, which tilts n0 by up to
+    // ~delta / (its smallest height) and so moves the far vertex off the plane by that times
+    // its distance. Near the origin 1e-9 of the size covers it; 1e5 from it, a tilted mesh
+    // 1e-3 across (delta 2e-11, 1e-7 of its triangles) had 176 of its 192 links read as
+    // creases, and the C1 methods changed by 5e-4 of the values (scale_invariance_test).
+    double largest = 0.0;
+    for (const Vec3& p : {p0[0], p0[1], p0[2], far})
+      for (int i = 0; i < 3; ++i) largest = std::max(largest, std::abs(p[i]));
+    const double delta = std::numeric_limits<double>::epsilon() * largest;
+    const double lever = glm::length(far - p0[0]) / smallestHeight(reference);
+    const double tolerance = 1e-9 * size + 4.0 * delta * (1.0 + lever);
+    const bool samePlane = glm::dot(n0, normal(other)) > 1.0 - 1e-9 && std::abs(glm::dot(far - p0[0], n0)) <= tolerance;
     if (!samePlane) continue;
     SurfaceTriangle& A = triangles_[t0];
     SurfaceTriangle& B = triangles_[t1];

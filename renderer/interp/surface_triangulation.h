@@ -10,7 +10,8 @@
 //  - the polygon is then triangulated without new vertices by a constrained Delaunay
 //    triangulation (for a convex quad: the diagonal that maximises the smallest angle),
 //    started from the corner with the smallest (x, y, z), so ties (a square) are broken by
-//    position, not numbering.
+//    position, not numbering; near ties are rounded to exact ones, so neither is the scale
+//    or the distance from the origin.
 // Quadratic elements are cut over their corners only, without T-vertex insertion.
 #include "core/types.h"
 #include "mesh/radiosity_mesh.h"
