@@ -34,25 +34,20 @@ std::vector<fs::path> filesIn(const fs::path& directory) {
 const fs::path kSource = RADVIEW_SOURCE_DIR;
 
 // A regression input passes when it no longer crashes, aborts or reports: refused or opened.
-TEST(FuzzRegressions, GltfInputsThatOnceCrashedAreHandled) {
-  const std::vector<fs::path> files = filesIn(kSource / "tests/fuzz/regressions/gltf");
-  if (files.empty()) GTEST_SKIP() << "no gltf input has crashed the fuzz target yet";
+// Replays every input kept for a target through `body`; skips, saying so, while there is none.
+void replayRegressions(const std::string& target, bool (*body)(const uint8_t*, size_t)) {
+  const std::vector<fs::path> files = filesIn(kSource / "tests/fuzz/regressions" / target);
+  if (files.empty()) GTEST_SKIP() << "no " << target << " input has crashed the fuzz target yet";
   for (const fs::path& file : files) {
     SCOPED_TRACE(file.string());
     const std::vector<uint8_t> bytes = readBytes(file);
-    fuzz::openGltfBytes(bytes.data(), bytes.size());
+    body(bytes.data(), bytes.size());
   }
 }
 
-TEST(FuzzRegressions, MeshInputsThatOnceCrashedAreHandled) {
-  const std::vector<fs::path> files = filesIn(kSource / "tests/fuzz/regressions/mesh");
-  if (files.empty()) GTEST_SKIP() << "no mesh input has crashed the fuzz target yet";
-  for (const fs::path& file : files) {
-    SCOPED_TRACE(file.string());
-    const std::vector<uint8_t> bytes = readBytes(file);
-    fuzz::buildMeshBytes(bytes.data(), bytes.size());
-  }
-}
+TEST(FuzzRegressions, GltfInputsThatOnceCrashedAreHandled) { replayRegressions("gltf", fuzz::openGltfBytes); }
+
+TEST(FuzzRegressions, MeshInputsThatOnceCrashedAreHandled) { replayRegressions("mesh", fuzz::buildMeshBytes); }
 
 TEST(FuzzSeeds, BundledFilesOpenThroughTheGltfTargetAndBadOnesAreRefused) {
   for (const fs::path& file : filesIn(kSource / "assets")) {
