@@ -27,9 +27,9 @@ int main(int argc, char** argv) {
           file.isSolution ? file.mesh : meshAndLight(file.scene, glm::length(file.scene.bounds().extent()) / 6.0);
       const std::vector<uint8_t> bytes = fuzz::encodeMesh(mesh);
       const std::filesystem::path path = out / (std::filesystem::path(argv[i]).stem().string() + ".mesh");
-      std::ofstream file(path, std::ios::binary);
-      file.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-      if (!file.flush()) throw Error(path.string(), "cannot write the seed");
+      std::ofstream seed(path, std::ios::binary);
+      seed.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+      if (!seed.flush()) throw Error(path.string(), "cannot write the seed");
       std::cout << path.string() << ": " << mesh.nodes.size() << " nodes, " << mesh.elements.size() << " elements\n";
     }
   } catch (const std::exception& e) {
