@@ -73,6 +73,7 @@ int runInfo(const InfoOptions& options) {
   } else {
     std::cout << "materials: " << file.mesh.materials.size() << '\n';
     for (const Material& m : file.mesh.materials) std::cout << "  " << m << '\n';
+    std::cout << "cameras: " << file.scene.cameras.size() << '\n';
     std::cout << "bounds: " << file.mesh.bounds() << '\n';
   }
   printMesh(viewed.mesh);

@@ -170,7 +170,7 @@ int runSolve(const SolveOptions& options) {
   bar.finish();
   size_t repaired = 0;
   if (options.triangulateTVertices) mesh = repairTVertices(mesh, &repaired);
-  writeSolution(mesh, options.out);
+  writeSolution(mesh, options.out, scene.cameras);
 
   const MeshTopology topology(mesh);
   const SolveProgress& p = summary.progress;

@@ -286,7 +286,7 @@ int runViewer(const ViewerOptions& options) {
     if (state.writeSolutionRequested) {
       state.writeSolutionRequested = false;
       try {
-        writeSolution(state.viewed.mesh, state.solutionPath);
+        writeSolution(state.viewed.mesh, state.solutionPath, state.viewed.file.scene.cameras);
         state.status = "solution written to " + state.solutionPath;
       } catch (const std::exception& e) {
         state.status = e.what();

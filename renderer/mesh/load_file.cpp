@@ -13,10 +13,12 @@ LoadedFile loadFile(const std::string& path) {
   loaded.path = path;
   loaded.warnings = document.warnings();
   loaded.isSolution = isSolution(document);
-  if (loaded.isSolution)
+  if (loaded.isSolution) {
     loaded.mesh = readSolution(document);
-  else
+    loaded.scene.cameras = importCameras(document, loaded.warnings);
+  } else {
     loaded.scene = mergeTrianglesIntoQuads(importScene(document, loaded.warnings));
+  }
   return loaded;
 }
 

@@ -12,7 +12,7 @@ namespace radview {
 struct LoadedFile {
   std::string path;
   bool isSolution = false;
-  Scene scene;                        // the imported scene, quads merged; empty for a solution
+  Scene scene;                        // the imported scene, quads merged; a solution's cameras only
   RadiosityMesh mesh;                 // the solution; empty for a scene
   std::vector<std::string> warnings;  // one line each, for the user
 };

@@ -7,6 +7,7 @@
 #include "core/strings.h"
 #include "geom/polygon.h"
 
+#include <glm/gtc/constants.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
@@ -132,8 +133,8 @@ std::vector<std::array<uint32_t, 3>> displayTriangles(const RadiosityMesh& mesh,
 
 class SolutionWriter {
  public:
-  SolutionWriter(const RadiosityMesh& mesh, const std::string& path)
-      : mesh_(mesh), path_(path), buffer_(model_), localOf_(mesh.nodes.size(), kNoVertex) {}
+  SolutionWriter(const RadiosityMesh& mesh, const std::vector<SceneCamera>& cameras, const std::string& path)
+      : mesh_(mesh), cameras_(cameras), path_(path), buffer_(model_), localOf_(mesh.nodes.size(), kNoVertex) {}
 
   tinygltf::Model build() {
     const double scale = toneMapScale(mesh_);
@@ -156,6 +157,10 @@ class SolutionWriter {
     model_.nodes.push_back(node);
     tinygltf::Scene scene;
     scene.nodes = {0};
+    for (size_t c = 0; c < cameras_.size(); ++c) {
+      scene.nodes.push_back(int(model_.nodes.size()));
+      addCamera(cameras_[c], c);
+    }
     model_.scenes.push_back(scene);
     model_.defaultScene = 0;
     model_.asset.version = "2.0";
@@ -167,6 +172,42 @@ class SolutionWriter {
 
  private:
   [[noreturn]] void fail(const std::string& problem) const { throw Error(path_, problem); }
+
+  // A standard glTF perspective camera on its own node (spec, "Cameras": it looks down the
+  // node's -Z with +Y up), so that any glTF viewer opens the solution where the scene's
+  // author looked from, and radview finds it the way it finds a scene's (importCameras).
+  void addCamera(const SceneCamera& camera, size_t index) {
+    const Vec3 forward = glm::normalize(camera.target - camera.eye);
+    const Vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const Vec3 up = glm::cross(right, forward);
+    const std::string what = "camera " + std::to_string(index) + " (" + camera.name + ")";
+    if (!std::isfinite(glm::dot(right, right) + glm::dot(camera.eye, camera.eye)))
+      fail(what + ": its eye, target and up do not make a view (not finite, or up along the view)");
+    if (!(camera.yfov > 0.0 && camera.yfov < glm::pi<double>()))
+      fail(what + ": yfov " + std::to_string(camera.yfov) + " is not in (0, pi)");
+    tinygltf::Camera gltfCamera;
+    gltfCamera.name = camera.name;
+    gltfCamera.type = "perspective";
+    gltfCamera.perspective.yfov = camera.yfov;
+    // glTF requires clip planes (tinygltf would write an invalid zfar of 0 for "infinite").
+    // radview fits its own to the scene; other viewers get a near plane a thousandth of the
+    // mesh's diagonal and a far one well past its farthest point.
+    const Bounds bounds = mesh_.bounds();
+    const double diagonal = bounds.diagonal();
+    gltfCamera.perspective.znear = diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
+    gltfCamera.perspective.zfar = std::max(2.0 * (glm::distance(camera.eye, bounds.center()) + diagonal),
+                                           2.0 * gltfCamera.perspective.znear);
+    model_.cameras.push_back(gltfCamera);
+
+    tinygltf::Node node;
+    node.name = camera.name;
+    node.camera = int(model_.cameras.size()) - 1;
+    node.matrix = {right.x,    right.y,    right.z,    0.0,  // column-major: the node's +X,
+                   up.x,       up.y,       up.z,       0.0,  // +Y,
+                   -forward.x, -forward.y, -forward.z, 0.0,  // +Z
+                   camera.eye.x, camera.eye.y, camera.eye.z, 1.0};  // and origin
+    model_.nodes.push_back(node);
+  }
 
   glm::vec3 toFloat(const Vec3& v, size_t node, const char* what) const {
     const glm::vec3 f(v);
@@ -299,6 +340,7 @@ class SolutionWriter {
   }
 
   const RadiosityMesh& mesh_;
+  const std::vector<SceneCamera>& cameras_;
   const std::string& path_;
   tinygltf::Model model_;
   BufferWriter buffer_;
@@ -587,7 +629,7 @@ double toneMapScale(const RadiosityMesh& mesh) {
   return maxY > 0.0 ? 0.8 / maxY : 1.0;
 }
 
-void writeSolution(const RadiosityMesh& mesh, const std::string& path) {
+void writeSolution(const RadiosityMesh& mesh, const std::string& path, const std::vector<SceneCamera>& cameras) {
   const std::string ext = lowerExtension(path);
   if (ext != ".glb" && ext != ".gltf")
     throw Error(path, "unknown solution file type \"" + ext + "\" (radview writes .glb and .gltf)");
@@ -600,7 +642,7 @@ void writeSolution(const RadiosityMesh& mesh, const std::string& path) {
   for (size_t e = 0; e < mesh.elements.size(); ++e)
     checkLimit(path, mesh.elements[e].corners.size(), kMaxElementCorners,
                "corners in element " + std::to_string(e));
-  const tinygltf::Model model = SolutionWriter(mesh, path).build();
+  const tinygltf::Model model = SolutionWriter(mesh, cameras, path).build();
 
   // Serialized in memory rather than by WriteGltfSceneToFile, which ignores failed writes and
   // truncates the old file before it knows the new one can be written.

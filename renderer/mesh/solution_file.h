@@ -8,17 +8,19 @@
 #include "scene/gltf_document.h"
 
 #include <string>
+#include <vector>
 
 namespace radview {
 
 // The name of the extension on the root, the materials and the primitives.
 inline constexpr const char* kSolutionExtension = "RADVIEW_radiosity_mesh";
 
-// Writes `mesh` to `path`: binary glTF for .glb, JSON with a data: URI buffer for .gltf.
-// Throws Error(path, ...) if the mesh fails validateMesh, has no element, has a value that
-// does not fit in float32, or the file cannot be written (then any file that was at `path` is
-// left unchanged: core/atomic_file.h).
-void writeSolution(const RadiosityMesh& mesh, const std::string& path);
+// Writes `mesh` to `path`: binary glTF for .glb, JSON with a data: URI buffer for .gltf, with
+// `cameras` (the scene's, usually) as standard glTF perspective cameras, which loadFile reads
+// back. Throws Error(path, ...) if the mesh fails validateMesh, has no element, has a value
+// that does not fit in float32, a camera makes no view, or the file cannot be written (then
+// any file that was at `path` is left unchanged: core/atomic_file.h).
+void writeSolution(const RadiosityMesh& mesh, const std::string& path, const std::vector<SceneCamera>& cameras = {});
 
 // True when the document carries the root RADVIEW_radiosity_mesh extension.
 bool isSolution(const GltfDocument& document);

@@ -52,6 +52,15 @@ class SceneImporter {
   SceneImporter(const GltfDocument& document, std::vector<std::string>& warnings)
       : doc_(document), model_(document.model()), warnings_(warnings) {}
 
+  // The cameras alone, for a file whose meshes are read another way (a solution file).
+  std::vector<SceneCamera> cameras() {
+    withMeshes_ = false;
+    const std::vector<int> parent = checkNodeTree();
+    for (int root : rootNodes(parent)) walk(root);
+    warnIf(ignoredCameras_, "orthographic or degenerate camera(s) ignored");
+    return std::move(scene_.cameras);
+  }
+
   Scene run() {
     const std::vector<int> parent = checkNodeTree();
     for (int root : rootNodes(parent)) walk(root);
@@ -140,7 +149,7 @@ class SceneImporter {
              std::to_string(item.node));
       const tinygltf::Node& node = model_.nodes[size_t(item.node)];
       const Mat4 worldFromNode = item.worldFromParent * localTransform(node, item.node);
-      if (node.mesh >= 0) addMesh(node, item.node, worldFromNode);
+      if (node.mesh >= 0 && withMeshes_) addMesh(node, item.node, worldFromNode);
       if (node.camera >= 0) addCamera(node, item.node, worldFromNode);
       if (node.skin >= 0) ++skinnedNodes_;
       // Reversed, so that children pop in file order and polygons keep the file's order.
@@ -354,6 +363,7 @@ class SceneImporter {
   const GltfDocument& doc_;
   const tinygltf::Model& model_;
   std::vector<std::string>& warnings_;
+  bool withMeshes_ = true;
   Scene scene_;
   std::map<int, int> materialOf_;  // glTF material index (-1: default) -> scene material
   std::map<int, size_t> skippedByMode_;
@@ -366,6 +376,10 @@ class SceneImporter {
 
 Scene importScene(const GltfDocument& document, std::vector<std::string>& warnings) {
   return SceneImporter(document, warnings).run();
+}
+
+std::vector<SceneCamera> importCameras(const GltfDocument& document, std::vector<std::string>& warnings) {
+  return SceneImporter(document, warnings).cameras();
 }
 
 }  // namespace radview

@@ -22,4 +22,8 @@ namespace radview {
 // guess about, and "no triangles to show" when nothing drawable remains.
 Scene importScene(const GltfDocument& document, std::vector<std::string>& warnings);
 
+// The perspective cameras alone, found and checked as importScene does; meshes are not read.
+// For solution files, whose meshes are readSolution's (mesh/solution_file.h).
+std::vector<SceneCamera> importCameras(const GltfDocument& document, std::vector<std::string>& warnings);
+
 }  // namespace radview

@@ -26,14 +26,26 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One directory per process: libFuzzer's parallel jobs are processes.
+// One directory per process (libFuzzer's parallel jobs are processes), removed at exit so
+// that test runs leave nothing in the temporary directory.
+class PrivateDirectory {
+ public:
+  PrivateDirectory() : path_(fs::temp_directory_path() / ("radview-fuzz-" + std::to_string(::getpid()))) {
+    fs::create_directories(path_);
+  }
+  ~PrivateDirectory() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
 const fs::path& privateDirectory() {
-  static const fs::path directory = [] {
-    fs::path d = fs::temp_directory_path() / ("radview-fuzz-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return directory;
+  static const PrivateDirectory directory;
+  return directory.path();
 }
 
 bool finite(const Sample& s) {

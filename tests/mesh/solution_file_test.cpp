@@ -194,6 +194,53 @@ TEST_F(SolutionFileTest, LoadFileRecognizesASolution) {
   EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
 }
 
+// The scene's cameras ride along as standard glTF cameras: loadFile gives them back (so a
+// solved scene opens where its author looked from), another viewer reads them as the
+// scene import does, and clip planes are valid glTF (0 < znear < zfar).
+TEST_F(SolutionFileTest, CamerasRoundTripAsGltfCameras) {
+  const std::vector<SceneCamera> cameras{
+      {"front", Vec3(0.5, 0.25, 3.0), Vec3(0.5, 0.25, 0.0), Vec3(0.0, 1.0, 0.0), glm::radians(40.0)},
+      {"tilted", Vec3(-2.0, 1.0, 1.5), Vec3(0.3, 0.2, 0.0), Vec3(0.2, 0.1, 1.0), glm::radians(70.0)}};
+  writeSolution(sampleMesh(), path("cameras.glb"), cameras);
+  const LoadedFile loaded = loadFile(path("cameras.glb"));
+  EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
+  ASSERT_EQ(loaded.scene.cameras.size(), 2u);
+  for (size_t c = 0; c < cameras.size(); ++c) {
+    SCOPED_TRACE(cameras[c].name);
+    const SceneCamera& read = loaded.scene.cameras[c];
+    EXPECT_EQ(read.name, cameras[c].name);
+    EXPECT_NEAR(glm::distance(read.eye, cameras[c].eye), 0.0, 1e-12);
+    const Vec3 forward = glm::normalize(cameras[c].target - cameras[c].eye);
+    EXPECT_NEAR(glm::distance(glm::normalize(read.target - read.eye), forward), 0.0, 1e-12);
+    // The up vector comes back made orthogonal to the view, in the same plane.
+    const Vec3 up = glm::normalize(cameras[c].up - glm::dot(cameras[c].up, forward) * forward);
+    EXPECT_NEAR(glm::distance(read.up, up), 0.0, 1e-12);
+    EXPECT_DOUBLE_EQ(read.yfov, cameras[c].yfov);
+  }
+  const GltfDocument document(path("cameras.glb"));
+  for (const tinygltf::Camera& camera : document.model().cameras) {
+    EXPECT_GT(camera.perspective.znear, 0.0);
+    EXPECT_GT(camera.perspective.zfar, camera.perspective.znear);
+  }
+  EXPECT_TRUE(loadFile(path("cameras.glb")).scene.polygons.empty());
+}
+
+TEST_F(SolutionFileTest, CameraThatMakesNoViewIsRefused) {
+  const SceneCamera alongUp{"along up", Vec3(0.0, 0.0, 5.0), Vec3(0.0), Vec3(0.0, 0.0, 1.0), 1.0};
+  const SceneCamera noFov{"no fov", Vec3(0.0, 0.0, 5.0), Vec3(0.0), Vec3(0.0, 1.0, 0.0), 0.0};
+  for (const SceneCamera& camera : {alongUp, noFov}) {
+    SCOPED_TRACE(camera.name);
+    try {
+      writeSolution(sampleMesh(), path("bad-camera.glb"), {camera});
+      FAIL() << "no error";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("bad-camera.glb"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(camera.name), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(path("bad-camera.glb")));
+  }
+}
+
 // What another glTF viewer sees: triangles that cover every element exactly once, no
 // degenerate ones (quadratic elements are not fanned along their straight edges), a tone
 // mapped COLOR_0 in [0,1], POSITION bounds, and no required extension.
