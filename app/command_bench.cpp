@@ -9,6 +9,7 @@
 #include "core/display_transform.h"
 #include "core/error.h"
 #include "core/image_difference.h"
+#include "core/memory_budget.h"
 #include "gather/final_gather.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
@@ -115,6 +116,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
 int runBench(const BenchOptions& options) {
   int width = 0, height = 0;
   parseSize(options.size, width, height);
+  checkImageMemory(options.size, width, height, kBenchBytesPerPixel, "the bench's reference and renders");
   std::vector<int> levels;
   for (double level : numberList(options.levels, "--levels")) {
     if (level != std::floor(level) || level < 1 || level > kMaxTessellationLevel)

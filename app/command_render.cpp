@@ -3,6 +3,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/limits.h"
+#include "core/memory_budget.h"
 #include "core/image_difference.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
@@ -24,6 +25,11 @@ void parseSize(const std::string& text, int& width, int& height) {
   height = std::stoi(m[2]);
   if (width < 1 || height < 1) throw Error("--size '" + text + "': each side must be at least 1 pixel");
   checkLimit("--size " + text, uint64_t(std::max(width, height)), kMaxImageSide, "pixels on a side");
+}
+
+void checkImageMemory(const std::string& sizeText, int width, int height, uint64_t bytesPerPixel,
+                      const std::string& what) {
+  checkMemory("--size " + sizeText, what, uint64_t(width) * uint64_t(height) * bytesPerPixel);
 }
 
 gl::RenderSettings settingsFrom(const DisplayOptions& display) {
@@ -113,6 +119,12 @@ int runRender(const RenderOptions& options) {
     throw Error(options.gather.givenWithGlMethod + " needs --method final-gather");
   int width = 0, height = 0;
   parseSize(options.size, width, height);
+  if (options.display.method == kFinalGather)
+    checkImageMemory(options.size, width, height, kGatherBytesPerPixel, "the final gather");
+  else if (options.display.view == "difference" || !options.linearOut.empty())
+    checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
+  else
+    checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   if (options.display.method == kFinalGather)

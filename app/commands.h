@@ -118,5 +118,9 @@ void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, 
 
 // "1024x768" -> width, height. Throws Error.
 void parseSize(const std::string& text, int& width, int& height);
+// Throws Error("--size TEXT: needs about ...") when `what`, at bytesPerPixel (core/memory_budget.h),
+// would need more memory than is available.
+void checkImageMemory(const std::string& sizeText, int width, int height, uint64_t bytesPerPixel,
+                      const std::string& what);
 
 }  // namespace radview

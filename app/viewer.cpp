@@ -4,6 +4,7 @@
 #include "app/viewer_panel.h"
 #include "core/error.h"
 #include "core/image_difference.h"
+#include "core/memory_budget.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 
@@ -164,6 +165,8 @@ struct WindowSession {
 int runViewer(const ViewerOptions& options) {
   int width = 0, height = 0;
   parseSize(options.size, width, height);
+  // The viewer can run the final gather at the window's size (key 9).
+  checkImageMemory(options.size, width, height, kGatherBytesPerPixel, "the window's final gather");
   if (!options.screenshot.empty() && options.frames == 0)
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
   checkGatherOptions(options.gather);

@@ -2,7 +2,8 @@
 // Every limit radview puts on what its input can ask for, in one place. Each bounds a number
 // that a file or an option controls and that decides an allocation or a loop's length, so that
 // no input, however hostile, makes radview allocate more than a 128 GiB machine has or run a
-// loop for days. Each value is far above what real data needs (README, "Limits", lists them
+// loop for days (what scales with an image is also checked against the memory available:
+// core/memory_budget.h). Each value is far above what real data needs (README, "Limits", lists them
 // with the memory they imply); past one, radview refuses with an Error naming the file or the
 // option and the limit (checkLimit below), never truncates silently.
 #include <cstddef>
@@ -63,10 +64,10 @@ inline constexpr size_t kMaxSegmentsPerPolygon = 1000;
 // --- images ----------------------------------------------------------------------------------
 
 // Width and height of a render, a bench view or a window (--size). 16384 is the largest
-// texture of Mesa's llvmpipe and half of a current GPU's; an image that size costs about 30 GiB
-// at the ~120 bytes per pixel a render (framebuffers, read-back copies, comparison) or a final
-// gather (sums, samples, image) needs. The context's own GL_MAX_TEXTURE_SIZE and
-// GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT apply on top (gl/render_targets.cpp).
+// texture of Mesa's llvmpipe and half of a current GPU's. The context's own GL_MAX_TEXTURE_SIZE
+// and GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT apply on top (gl/render_targets.cpp), and the memory an
+// image that size needs (10 to 48 GiB) is checked against what is available
+// (core/memory_budget.h).
 inline constexpr int kMaxImageSide = 16384;
 
 // --- samples and repetitions -------------------------------------------------------------------
