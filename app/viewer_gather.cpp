@@ -1,5 +1,10 @@
 #include "app/viewer_gather.h"
 
+#include "core/error.h"
+#include "core/memory_budget.h"
+
+#include <string>
+
 namespace radview {
 
 namespace {
@@ -41,6 +46,15 @@ void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, u
     if (gather_.settings()) gather_.cancel();
     renderer.clearShownImage();  // its mean is of another view
     if (now - changedAt_ >= kSettle) {
+      // The window may have grown since the start-up check (runViewer): a gather too large for
+      // the memory available is turned off and said so, and the GL method drawn instead.
+      try {
+        checkMemory("window " + std::to_string(width) + "x" + std::to_string(height), "the final gather",
+                    uint64_t(width) * uint64_t(height) * kGatherBytesPerPixel);
+      } catch (const Error&) {
+        controls.on = false;
+        throw;
+      }
       gather_.start(mesh, wanted);
       gatheredMesh_ = meshVersion;
     }

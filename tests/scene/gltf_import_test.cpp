@@ -3,6 +3,7 @@
 #include "scene/gltf_import.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "geom/polygon.h"
 #include "scene/gltf_document.h"
 
@@ -478,6 +479,20 @@ TEST_F(GltfImportTest, DeclaredCountsPastTheLimitsAreRefusedBeforeAnyAllocation)
   zeros.model.accessors[0].count = 20'000'000;
   EXPECT_ERROR_NAMES(errorOf(zeros, "zeros.gltf"), "zeros.gltf",
                      "has no bufferView and a count of 20000000, more than radview's limit of 16777216");
+}
+
+// A small file that instances one mesh many times: the scene's triangle limit counts
+// instances, so 1,000 triangles on 2,001 nodes (a 36 KB buffer) are refused.
+TEST_F(GltfImportTest, InstancedTrianglesPastTheSceneLimitAreRefused) {
+  GltfBuilder b;
+  std::vector<float> xyz;
+  for (int i = 0; i < 1000; ++i)
+    xyz.insert(xyz.end(), {float(i), 0.f, 0.f, float(i) + 0.5f, 0.f, 0.f, float(i), 1.f, 0.f});
+  const int mesh = b.mesh(b.positions(xyz));
+  for (int n = 0; n < 2001; ++n) b.node(mesh);
+  static_assert(kMaxSceneTriangles == 2'000'000, "the file above is sized for this limit");
+  EXPECT_ERROR_NAMES(errorOf(b, "instanced.gltf"), "instanced.gltf",
+                     "more than 2000000 triangles after instancing; radview does not mesh scenes that large");
 }
 
 TEST_F(GltfImportTest, StrideSmallerThanElementIsRefused) {
