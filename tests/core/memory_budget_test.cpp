@@ -1,12 +1,11 @@
 // The memory check for image-sized work (core/memory_budget.h).
 #include "core/memory_budget.h"
 
-#include "core/error.h"
+#include "tests/error_message.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <functional>
 #include <string>
 
 namespace radview {
@@ -29,14 +28,7 @@ class MaxMemoryVariable {
   bool hadOld_ = false;
 };
 
-std::string messageOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(MemoryBudget, ByteSizesTakeBinarySuffixes) {
   EXPECT_EQ(parseByteSize("0"), 0u);
@@ -49,13 +41,13 @@ TEST(MemoryBudget, ByteSizesTakeBinarySuffixes) {
 }
 
 TEST(MemoryBudget, RefusesPastWhatIsAvailableNamingBoth) {
-  const std::string message = messageOf(
+  const std::string message = errorOf(
       [] { checkMemory("--size 4096x4096", "the final gather", uint64_t(1800) << 20, uint64_t(1) << 30); });
   EXPECT_EQ(message,
             "--size 4096x4096: needs about 1.8 GiB of memory for the final gather, more than the 1.0 GiB this machine "
             "has available; use a smaller size");
-  EXPECT_EQ(messageOf([] { checkMemory("x", "y", uint64_t(1) << 30, uint64_t(1) << 30); }), "");
-  EXPECT_EQ(messageOf([] { checkMemory("x", "y", ~uint64_t(0), std::nullopt); }), "") << "unknown: not checked";
+  EXPECT_EQ(errorOf([] { checkMemory("x", "y", uint64_t(1) << 30, uint64_t(1) << 30); }), "(no error)");
+  EXPECT_EQ(errorOf([] { checkMemory("x", "y", ~uint64_t(0), std::nullopt); }), "(no error)") << "unknown: not checked";
 }
 
 TEST(MemoryBudget, TheMachineReportsWhatIsAvailable) {
@@ -69,11 +61,11 @@ TEST(MemoryBudget, TheVariableOverridesTheMachine) {
   {
     const MaxMemoryVariable variable("3G");
     EXPECT_EQ(availableMemoryBytes(), uint64_t(3) << 30);
-    EXPECT_NE(messageOf([] { checkMemory("w", "z", uint64_t(4) << 30); }).find("than the 3.0 GiB that RADVIEW_MAX_MEMORY allows"),
+    EXPECT_NE(errorOf([] { checkMemory("w", "z", uint64_t(4) << 30); }).find("than the 3.0 GiB that RADVIEW_MAX_MEMORY allows"),
               std::string::npos);
   }
   const MaxMemoryVariable variable("plenty");
-  EXPECT_EQ(messageOf([] { availableMemoryBytes(); }),
+  EXPECT_EQ(errorOf([] { availableMemoryBytes(); }),
             "RADVIEW_MAX_MEMORY='plenty': expected a size in bytes, or with a K, M or G suffix (e.g. 8G)");
 }
 

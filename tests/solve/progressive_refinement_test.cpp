@@ -7,6 +7,7 @@
 #include "mesh/uniform_mesher.h"
 #include "solve/element_to_node.h"
 #include "solve/radiosity_solve.h"
+#include "tests/error_message.h"
 #include "tests/solve/solver_scenes.h"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@ namespace radview {
 namespace {
 
 using test::closedCornellBox;
+using test::errorOf;
 using test::cornellBox;
 using test::furnaceBox;
 
@@ -25,15 +27,6 @@ using test::furnaceBox;
 void shootAll(ProgressiveRefinement& solver) {
   while (solver.step()) {
   }
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 TEST(ProgressiveRefinementTest, FurnaceConvergesToEOverOneMinusRho) {
