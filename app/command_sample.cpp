@@ -1,89 +1,115 @@
-// radview sample: the CPU reference interpolants at points a user names, printed at full
-// double precision, one line per point, for scripts, tests and benchmarks.
+// radview sample: the CPU reference interpolants at points a user names, one line per point,
+// each number the shortest text that reads back as the same double, for scripts, tests and
+// benchmarks. Points are located through a spatial index and evaluated on every core, so a
+// million of them on a million elements take seconds.
 #include "app/commands.h"
 #include "app/viewed_file.h"
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "interp/interpolant.h"
-#include "interp/surface_point.h"
+#include "interp/surface_locator.h"
 
+#include <array>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
+#include <string_view>
 
 namespace radview {
 
 namespace {
 
 struct PointRequest {
-  std::string text;  // as given, for error messages
+  std::string_view entry;  // as given, for error messages
   bool byElement = false;
   uint32_t element = 0;
   Vec3 values{0.0};  // world position, or barycentric coordinates
 };
 
+std::string readAll(std::istream& in) {
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A finite double filling all of `word` ('+' allowed in front), as strtod reads it.
+std::optional<double> finiteNumber(std::string_view word) {
+  if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), v);
+  if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
 // Entries are lines (or ';'-separated) of "x y z" or "element b0 b1 b2"; '#' starts a comment.
-std::vector<PointRequest> parsePoints(const std::string& spec, size_t elementCount) {
-  std::string text;
-  std::string source = "--points";
-  if (spec == "-") {
-    std::stringstream ss;
-    ss << std::cin.rdbuf();
-    text = ss.str();
-    source = "standard input";
-  } else if (std::ifstream in(spec); in && spec.find(' ') == std::string::npos && spec.find(';') == std::string::npos) {
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
-    source = spec;
-  } else {
-    text = spec;
-  }
+// The requests point into `text`.
+std::vector<PointRequest> parsePoints(std::string_view text, const std::string& source, size_t elementCount) {
   std::vector<PointRequest> out;
-  std::stringstream lines(text);
   size_t lineNumber = 0;
-  for (std::string line; std::getline(lines, line);) {
+  for (size_t lineStart = 0; lineStart < text.size();) {
+    const size_t lineEnd = std::min(text.find('\n', lineStart), text.size());
+    std::string_view line = text.substr(lineStart, lineEnd - lineStart);
+    lineStart = lineEnd + 1;
     ++lineNumber;
-    std::stringstream entries(line.substr(0, line.find('#')));
-    for (std::string entry; std::getline(entries, entry, ';');) {
-      std::stringstream fields(entry);
-      std::vector<std::string> words;
-      for (std::string w; fields >> w;) words.push_back(w);
-      if (words.empty()) continue;
-      const std::string where = source + " line " + std::to_string(lineNumber) + ", '" + entry + "'";
-      std::vector<double> numbers;
-      for (const std::string& w : words) {
-        size_t used = 0;
-        double v = 0.0;
-        try {
-          v = std::stod(w, &used);
-        } catch (const std::exception&) {
-          used = 0;
+    line = line.substr(0, line.find('#'));
+    for (size_t entryStart = 0; entryStart <= line.size();) {
+      const size_t entryEnd = std::min(line.find(';', entryStart), line.size());
+      const std::string_view entry = line.substr(entryStart, entryEnd - entryStart);
+      entryStart = entryEnd + 1;
+      const auto where = [&] {
+        return source + " line " + std::to_string(lineNumber) + ", '" + std::string(entry) + "'";
+      };
+      std::array<double, 4> numbers{};
+      std::array<std::string_view, 4> words;
+      size_t count = 0;
+      for (size_t i = 0; i < entry.size();) {
+        while (i < entry.size() && isBlank(entry[i])) ++i;
+        size_t j = i;
+        while (j < entry.size() && !isBlank(entry[j])) ++j;
+        if (j > i) {
+          const std::string_view word = entry.substr(i, j - i);
+          const std::optional<double> v = finiteNumber(word);
+          if (!v) throw Error(where() + ": '" + std::string(word) + "' is not a finite number");
+          if (count == 4) throw Error(where() + ": expected 'x y z' or 'element b0 b1 b2'");
+          words[count] = word;
+          numbers[count++] = *v;
         }
-        if (used != w.size() || !std::isfinite(v)) throw Error(where + ": '" + w + "' is not a finite number");
-        numbers.push_back(v);
+        i = j;
       }
+      if (count == 0) continue;
       PointRequest request;
-      request.text = entry;
-      if (numbers.size() == 3) {
+      request.entry = entry;
+      if (count == 3) {
         request.values = {numbers[0], numbers[1], numbers[2]};
-      } else if (numbers.size() == 4) {
+      } else if (count == 4) {
         if (numbers[0] < 0 || numbers[0] != std::floor(numbers[0]) || numbers[0] >= double(elementCount))
-          throw Error(where + ": no element " + words[0] + " (the mesh has " + std::to_string(elementCount) +
-                      " elements, numbered from 0)");
+          throw Error(where() + ": no element " + std::string(words[0]) + " (the mesh has " +
+                      std::to_string(elementCount) + " elements, numbered from 0)");
         request.byElement = true;
         request.element = static_cast<uint32_t>(numbers[0]);
         request.values = {numbers[1], numbers[2], numbers[3]};
         if (std::abs(numbers[1] + numbers[2] + numbers[3] - 1.0) > 1e-9)
-          throw Error(where + ": barycentric coordinates must sum to 1");
+          throw Error(where() + ": barycentric coordinates must sum to 1");
       } else {
-        throw Error(where + ": expected 'x y z' or 'element b0 b1 b2'");
+        throw Error(where() + ": expected 'x y z' or 'element b0 b1 b2'");
       }
       out.push_back(request);
     }
   }
   if (out.empty()) throw Error(source + ": no points given");
+  return out;
+}
+
+// Shortest text that reads back as exactly `v` (std::to_chars), then a separator.
+char* appendNumber(char* out, double v, char separator) {
+  out = std::to_chars(out, out + 32, v).ptr;
+  *out++ = separator;
   return out;
 }
 
@@ -100,35 +126,65 @@ int runSample(const SampleOptions& options) {
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize);
   const RadiosityMesh& mesh = viewed.mesh;
-  const std::vector<PointRequest> requests = parsePoints(options.points, mesh.elements.size());
-  const double maxDistance = options.maxDistance >= 0.0 ? options.maxDistance : 1e-3 * mesh.bounds().diagonal();
-  // Every point is placed before anything is printed, so a bad one leaves no partial output.
-  std::vector<SurfacePoint> points;
-  for (const PointRequest& request : requests) {
-    SurfacePoint point;
-    if (request.byElement) {
-      point.element = request.element;
-      point.x = pointFromBarycentric(mesh, request.element, request.values);
-    } else {
-      point = nearestSurfacePoint(mesh, request.values);
-      if (point.distance > maxDistance)
-        throw Error("point '" + request.text + "' is off every surface: the nearest element (" +
-                    std::to_string(point.element) + ") is " + std::to_string(point.distance) +
-                    " away, more than --max-distance " + std::to_string(maxDistance));
-    }
-    points.push_back(point);
+  std::string text, source = "--points";
+  if (options.points == "-") {
+    text = readAll(std::cin);
+    source = "standard input";
+  } else if (std::ifstream in(options.points);
+             in && options.points.find(' ') == std::string::npos && options.points.find(';') == std::string::npos) {
+    text = readAll(in);
+    source = options.points;
+  } else {
+    text = options.points;
   }
+  const std::vector<PointRequest> requests = parsePoints(text, source, mesh.elements.size());
+  const double maxDistance = options.maxDistance >= 0.0 ? options.maxDistance : 1e-3 * mesh.bounds().diagonal();
+
+  // Every point is placed before anything is printed, so a bad one leaves no partial output;
+  // the first bad one in the input is the one reported.
+  bool anyWorldPoint = false;
+  for (const PointRequest& request : requests) anyWorldPoint |= !request.byElement;
+  std::optional<SurfaceLocator> locator;
+  if (anyWorldPoint) locator.emplace(mesh);
+  std::vector<SurfacePoint> points(requests.size());
+  parallelFor(requests.size(), [&](size_t i) {
+    const PointRequest& request = requests[i];
+    if (request.byElement) {
+      points[i].element = request.element;
+      points[i].x = pointFromBarycentric(mesh, request.element, request.values);
+    } else {
+      points[i] = locator->nearest(request.values);
+    }
+  });
+  for (size_t i = 0; i < requests.size(); ++i)
+    if (!requests[i].byElement && points[i].distance > maxDistance)
+      throw Error("point '" + std::string(requests[i].entry) + "' is off every surface: the nearest element (" +
+                  std::to_string(points[i].element) + ") is " + std::to_string(points[i].distance) +
+                  " away, more than --max-distance " + std::to_string(maxDistance));
   const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
 
   std::printf("# radview sample %s --method %s: element x y z distance B_r B_g B_b "
               "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
               options.file.c_str(), options.method.c_str());
-  for (const SurfacePoint& point : points) {
-    const Sample s = interpolant->evaluate(point.element, point.x);
-    std::printf("%u %.17g %.17g %.17g %.17g %.17g %.17g %.17g", point.element, point.x.x, point.x.y, point.x.z,
-                point.distance, s.B.r, s.B.g, s.B.b);
-    for (const Vec3& g : s.gradient) std::printf(" %.17g %.17g %.17g", g.x, g.y, g.z);
-    std::printf("\n");
+  // Evaluated and formatted on every core, a block of lines at a time, written in order.
+  constexpr size_t kLine = 512, kBlock = 16384;  // a line is at most 10 + 18 * 25 characters
+  std::vector<char> lines(kLine * std::min(kBlock, points.size()));
+  std::vector<size_t> lengths(std::min(kBlock, points.size()));
+  for (size_t first = 0; first < points.size(); first += kBlock) {
+    const size_t count = std::min(kBlock, points.size() - first);
+    parallelFor(count, [&](size_t i) {
+      const SurfacePoint& point = points[first + i];
+      const Sample s = interpolant->evaluate(point.element, point.x);
+      char* const begin = &lines[i * kLine];
+      char* out = std::to_chars(begin, begin + 16, point.element).ptr;
+      *out++ = ' ';
+      for (double v : {point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b}) out = appendNumber(out, v, ' ');
+      for (const Vec3& g : s.gradient)
+        for (int k = 0; k < 3; ++k) out = appendNumber(out, g[k], ' ');
+      out[-1] = '\n';
+      lengths[i] = size_t(out - begin);
+    });
+    for (size_t i = 0; i < count; ++i) std::fwrite(&lines[i * kLine], 1, lengths[i], stdout);
   }
   return 0;
 }

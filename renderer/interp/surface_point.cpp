@@ -8,10 +8,6 @@
 
 namespace radview {
 
-namespace {
-
-// Closest point to p on triangle (a, b, c): its projection when inside, else the closest
-// point of the nearest edge.
 Vec3 closestOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& p) {
   const Vec3 w = barycentricFrame({a, b, c})(p);
   if (w.x >= 0 && w.y >= 0 && w.z >= 0) return w.x * a + w.y * b + w.z * c;
@@ -26,8 +22,6 @@ Vec3 closestOnTriangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& 
     if (glm::length(q - p) < glm::length(best - p)) best = q;
   return best;
 }
-
-}  // namespace
 
 SurfacePoint nearestSurfacePoint(const RadiosityMesh& mesh, const Vec3& p) {
   if (mesh.elements.empty()) throw Error("the mesh has no elements to sample");

@@ -1,50 +1,23 @@
 #include "solve/ray_caster.h"
 
 #include "core/error.h"
+#include "geom/embree_device.h"
 #include "geom/polygon.h"
 
 #include <embree3/rtcore.h>
 
 #include <limits>
-#include <mutex>
 #include <string>
 #include <vector>
 
 namespace radview {
 
-namespace {
-
-// Embree reports errors through a callback; the first message is kept for the Error thrown.
-struct ErrorSink {
-  std::mutex mutex;
-  std::string message;
-};
-
-void recordError(void* userPtr, RTCError code, const char* text) {
-  auto* sink = static_cast<ErrorSink*>(userPtr);
-  const std::lock_guard<std::mutex> lock(sink->mutex);
-  if (sink->message.empty())
-    sink->message = "Embree error " + std::to_string(int(code)) + (text ? std::string(": ") + text : std::string());
-}
-
-}  // namespace
-
 struct RayCaster::Embree {
-  ErrorSink errors;
-  RTCDevice device = nullptr;
+  EmbreeDevice device{"ray casting"};
   RTCScene scene = nullptr;
 
   ~Embree() {
     if (scene) rtcReleaseScene(scene);
-    if (device) rtcReleaseDevice(device);
-  }
-  // Throws the recorded error, or `what` failed without a message.
-  void check(const char* what) {
-    const RTCError code = device ? rtcGetDeviceError(device) : RTC_ERROR_UNKNOWN;
-    const std::lock_guard<std::mutex> lock(errors.mutex);
-    if (code == RTC_ERROR_NONE && errors.message.empty()) return;
-    throw Error(std::string("ray casting: ") + what + " failed: " +
-                (errors.message.empty() ? "Embree error " + std::to_string(int(code)) : errors.message));
   }
 };
 
@@ -58,10 +31,6 @@ RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
     throw Error("ray casting: the scene's size is not a finite number (coordinates too large for double)");
   center_ = bounds.center();
   scale_ = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
-
-  embree_->device = rtcNewDevice(nullptr);
-  if (!embree_->device) throw Error("ray casting: Embree could not create a device");
-  rtcSetDeviceErrorFunction(embree_->device, recordError, &embree_->errors);
 
   std::vector<float> vertices;
   std::vector<unsigned> indices;
@@ -83,21 +52,21 @@ RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
   }
   triangleCount_ = indices.size() / 3;
 
-  embree_->scene = rtcNewScene(embree_->device);
+  embree_->scene = rtcNewScene(embree_->device.get());
   // Robust: rays through a shared edge of two triangles hit one of them (no leaks through
   // the edges of the Cornell box's blocks into their shadows).
   rtcSetSceneFlags(embree_->scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(embree_->scene, RTC_BUILD_QUALITY_HIGH);
   if (triangleCount_ > 0) {
-    RTCGeometry geometry = rtcNewGeometry(embree_->device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    embree_->check("creating the triangle geometry");
+    RTCGeometry geometry = rtcNewGeometry(embree_->device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+    embree_->device.check("creating the triangle geometry");
     auto* vertexBuffer = static_cast<float*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertices.size() / 3));
     auto* indexBuffer = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), triangleCount_));
     if (!vertexBuffer || !indexBuffer) {
       rtcReleaseGeometry(geometry);
-      embree_->check("allocating the geometry buffers");
+      embree_->device.check("allocating the geometry buffers");
       throw Error("ray casting: Embree could not allocate the geometry buffers");
     }
     std::copy(vertices.begin(), vertices.end(), vertexBuffer);
@@ -107,7 +76,7 @@ RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
     rtcReleaseGeometry(geometry);
   }
   rtcCommitScene(embree_->scene);
-  embree_->check("building the scene");
+  embree_->device.check("building the scene");
 }
 
 RayCaster::~RayCaster() = default;

@@ -6,7 +6,7 @@
 #include "core/image.h"
 #include "geom/polygon.h"
 #include "interp/interpolant.h"
-#include "interp/surface_point.h"
+#include "interp/surface_locator.h"
 
 #include <cmath>
 #include <iostream>
@@ -23,6 +23,7 @@ inline PixelComparison compareWithReference(const LinearImage& image, const Came
   const Vec3 n = mesh.elementNormal(0);
   const Vec3 origin = mesh.nodes[mesh.elements[0].corners[0]].position;
   const glm::dmat4 worldFromClip = glm::inverse(camera.clipFromWorld(double(image.width) / image.height));
+  const SurfaceLocator locator(mesh);
   PixelComparison result;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
@@ -32,7 +33,7 @@ inline PixelComparison compareWithReference(const LinearImage& image, const Came
       const glm::dvec4 a = worldFromClip * glm::dvec4(nx, ny, -1, 1), b = worldFromClip * glm::dvec4(nx, ny, 1, 1);
       const Vec3 from = Vec3(a) / a.w, direction = Vec3(b) / b.w - from;
       const Vec3 hit = from + direction * (glm::dot(origin - from, n) / glm::dot(direction, n));
-      const SurfacePoint point = nearestSurfacePoint(mesh, hit);
+      const SurfacePoint point = locator.nearest(hit);
       const Rgb want = reference.evaluate(point.element, point.x).B;
       double error = 0.0;
       for (int c = 0; c < 3; ++c) {
