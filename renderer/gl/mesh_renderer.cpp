@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/strings.h"
+#include "gl/patch_nets.h"
 #include "gl/patch_vertices.h"
 #include "interp/c1_patches.h"
 #include "interp/t_vertex_repair.h"
@@ -196,29 +197,32 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
       for (uint32_t n : e.corners)
         brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
   if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
-  patchesFor_ = comparisonPatchesFor_ = -1;
+  patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
   repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
 }
 
 namespace {
 
-// The Bezier pieces of a quadratic or C1 method on `mesh`, and the lines that split elements
-// into them (none for quadratic elements).
+// The Bezier pieces of a quadratic or C1 method on `mesh`, each output when asked for: the
+// pieces as vertices (the Bezier pass), as nets (the deferred pass, C1 methods only) and the
+// lines that split elements into them (none for quadratic elements).
 void buildPieces(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
-                 std::vector<BezierVertex>& vertices, std::vector<glm::vec3>& split) {
+                 std::vector<BezierVertex>* vertices, PatchNets* nets, std::vector<glm::vec3>& split) {
   if (method == ShadingMethod::Quadratic) {
-    vertices = quadraticLagrangeVertices(mesh);  // its serendipity quads last (uploadMesh counts them)
+    if (vertices) *vertices = quadraticLagrangeVertices(mesh);  // its serendipity quads last (uploadMesh counts them)
     return;
   }
   const SurfaceTriangulation surface(mesh);
   const CornerGradients gradients = vertexGradients(surface, true);
   if (method == ShadingMethod::CloughTocher) {
     const auto patches = buildCloughTocherPatches(surface, gradients, variant);
-    vertices = cloughTocherVertices(patches);
+    if (vertices) *vertices = cloughTocherVertices(patches);
+    if (nets) *nets = cloughTocherNets(patches);
     split = cloughTocherSplitLines(patches);
   } else {
     const auto patches = buildPowellSabinPatches(surface, gradients);
-    vertices = powellSabinVertices(patches);
+    if (vertices) *vertices = powellSabinVertices(patches);
+    if (nets) *nets = powellSabinNets(patches);
     split = powellSabinSplitLines(patches);
   }
 }
@@ -228,16 +232,34 @@ int degreeOf(ShadingMethod method) { return method == ShadingMethod::CloughToche
 
 }  // namespace
 
-void MeshRenderer::uploadPatches(const RenderSettings& settings) {
+bool MeshRenderer::isDeferred(ShadingMethod method, const BezierEvaluation& evaluation) {
+  return (method == ShadingMethod::C1Quadratic || method == ShadingMethod::CloughTocher) &&
+         evaluation.tessellation == 0;
+}
+
+void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) {
   const int wanted = piecesKey(settings.method, settings.cloughTocher);
-  if (wanted == patchesFor_) return;
+  if ((deferred ? deferredFor_ : patchesFor_) == wanted && splitFor_ == wanted) return;
   std::vector<BezierVertex> vertices;
+  PatchNets nets;
   std::vector<glm::vec3> split;
-  buildPieces(mesh_, settings.method, settings.cloughTocher, vertices, split);
+  buildPieces(mesh_, settings.method, settings.cloughTocher, deferred ? nullptr : &vertices, deferred ? &nets : nullptr,
+              split);
   glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
   splitVertices_ = static_cast<GLsizei>(split.size());
-  bezierPass_.upload(std::move(vertices), degreeOf(settings.method));
-  patchesFor_ = wanted;
+  splitFor_ = wanted;
+  // One of the two passes holds the method's pieces at a time: memory stays what the view needs.
+  if (deferred) {
+    deferred_.upload(nets);
+    bezierPass_.upload({}, 3);
+    deferredFor_ = wanted;
+    patchesFor_ = -1;
+  } else {
+    bezierPass_.upload(std::move(vertices), degreeOf(settings.method));
+    deferred_.upload(PatchNets{});
+    patchesFor_ = wanted;
+    deferredFor_ = -1;
+  }
 }
 
 void MeshRenderer::uploadControlNet(double heightScale) {
@@ -262,7 +284,7 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
 }
 
 void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
-                                 const glm::mat4& clipFromWorld, int width, int height) {
+                                 const glm::mat4& clipFromWorld, int width, int height, bool comparison) {
   GLint framebuffer = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   const float clearLinear[] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -284,6 +306,10 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
   } else if (method == ShadingMethod::ScanlineGouraud || method == ShadingMethod::Bilinear) {
     drawPolygons(method == ShadingMethod::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
                  height);
+  } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
+    DeferredPass& pass = comparison ? comparisonDeferred_ : deferred_;
+    pass.draw(clipFromWorld, targets_, GLuint(framebuffer));
+    statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
   } else {
     BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;
     BezierEvaluation evaluation = bezierEvaluation(settings, camera);
@@ -292,6 +318,7 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
     const bool serendipityPass = method == ShadingMethod::Quadratic && evaluation.surfaceHeight == 0.0;
     if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
     pass.draw(clipFromWorld, evaluation);
+    statistics_ = pass.statistics();
     if (serendipityPass && serendipityVertices_ > 0)
       drawPolygons(2, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
   }
@@ -338,15 +365,27 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   targets_.resize(width, height);
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
-  if (settings.method >= ShadingMethod::Quadratic) uploadPatches(settings);
+  if (settings.method >= ShadingMethod::Quadratic)
+    uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
+  // The comparison is drawn per pixel: deferred for the C1 methods, by its own Bezier pass for
+  // the quadratic one.
   const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
+  const bool comparisonDeferred = isDeferred(settings.comparisonMethod, BezierEvaluation{});
   if (compareMethod && settings.comparisonMethod >= ShadingMethod::Quadratic &&
-      comparisonKey != comparisonPatchesFor_ && settings.comparisonMethod != settings.method) {
+      (comparisonDeferred || settings.comparisonMethod != settings.method) &&
+      comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     std::vector<BezierVertex> vertices;
+    PatchNets nets;
     std::vector<glm::vec3> split;
-    buildPieces(mesh_, settings.comparisonMethod, settings.cloughTocher, vertices, split);
-    comparisonPass_.upload(std::move(vertices), degreeOf(settings.comparisonMethod));
-    comparisonPatchesFor_ = comparisonKey;
+    buildPieces(mesh_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred ? nullptr : &vertices,
+                comparisonDeferred ? &nets : nullptr, split);
+    if (comparisonDeferred) {
+      comparisonDeferred_.upload(nets);
+      comparisonDeferredFor_ = comparisonKey;
+    } else {
+      comparisonPass_.upload(std::move(vertices), degreeOf(settings.comparisonMethod));
+      comparisonPatchesFor_ = comparisonKey;
+    }
   }
   const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic;
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
@@ -381,10 +420,10 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
     RenderSettings comparison = settings;
     comparison.tessellation = 0;
-    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height);
+    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height, true);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
-  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height);
+  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false);
   if (hasShownImage())
     glBlitNamedFramebuffer(shownFbo_, targets_.linearFramebuffer(), 0, 0, shownWidth_, shownHeight_, 0, 0, width,
                            height, GL_COLOR_BUFFER_BIT, GL_NEAREST);

@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "gl/bezier_pass.h"
+#include "gl/deferred_pass.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
 #include "interp/interpolant.h"
@@ -116,8 +117,9 @@ class MeshRenderer {
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
   double gpuFrameMs() const { return gpuFrameMs_; }
   size_t triangleCount() const { return triangleVertices_ / 3; }
-  // The Bezier pieces of the last quadratic or C1 frame: patches, draws, levels, triangles.
-  const TessellationStatistics& tessellationStatistics() const { return bezierPass_.statistics(); }
+  // The Bezier pieces of the last quadratic or C1 frame: patches, draws, levels, triangles (for
+  // the C1 methods per pixel: the element triangles of the deferred pass, at level 1).
+  const TessellationStatistics& tessellationStatistics() const { return statistics_; }
   size_t tVertexCount() const { return size_t(tVertexMarkers_); }
 
  private:
@@ -143,15 +145,23 @@ class MeshRenderer {
   GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
-  // the method or the Clough-Tocher variant changes).
-  void uploadPatches(const RenderSettings& settings);
-  // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth.
+  // the method or the Clough-Tocher variant changes): for the deferred pass when `deferred`
+  // (the C1 methods per pixel), else for the Bezier pass, releasing the other's.
+  void uploadPatches(const RenderSettings& settings, bool deferred);
+  // Whether `method` is drawn by the deferred pass with this evaluation: the C1 methods per
+  // pixel, on the flat surface.
+  static bool isDeferred(ShadingMethod method, const BezierEvaluation& evaluation);
+  // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth;
+  // `comparison` when it is the difference view's comparison.
   void drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
-                     const glm::mat4& clipFromWorld, int width, int height);
+                     const glm::mat4& clipFromWorld, int width, int height, bool comparison);
   // The comparison method's pieces, when it is a Bezier method (its own pass: switching
   // between the two every frame would rebuild them every frame).
   BezierPass comparisonPass_;
   int comparisonPatchesFor_ = -1;
+  DeferredPass deferred_, comparisonDeferred_;  // the C1 methods per pixel, the method's and the comparison's
+  int deferredFor_ = -1, comparisonDeferredFor_ = -1;
+  TessellationStatistics statistics_;  // of the last frame's method
   GLuint referenceTexture_ = 0;
   GLuint shownTexture_ = 0, shownFbo_ = 0;  // setShownImage's, and a framebuffer to blit it from
   int shownWidth_ = 0, shownHeight_ = 0;
@@ -174,6 +184,7 @@ class MeshRenderer {
   GLsizei netVertices_ = 0;
   std::array<double, 2> netFor_{-1, 0};  // patchesFor_, height scale
   int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
+  int splitFor_ = -1;    // the method and variant splitVbo_ holds
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};
   int frame_ = 0;

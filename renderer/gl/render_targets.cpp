@@ -33,9 +33,11 @@ void RenderTargets::release() {
   glDeleteFramebuffers(1, &linearFbo_);
   glDeleteFramebuffers(1, &displayFbo_);
   glDeleteFramebuffers(1, &comparisonFbo_);
-  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_};
-  glDeleteTextures(4, textures);
+  glDeleteFramebuffers(1, &visibilityFbo_);
+  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_, visibilityColor_};
+  glDeleteTextures(5, textures);
   linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = comparisonFbo_ = comparisonColor_ = 0;
+  visibilityFbo_ = visibilityColor_ = 0;
   width_ = height_ = 0;
 }
 
@@ -81,6 +83,16 @@ GLuint RenderTargets::ensureComparison() {
   glNamedFramebufferTexture(comparisonFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
   requireComplete(comparisonFbo_, "comparison");
   return comparisonFbo_;
+}
+
+GLuint RenderTargets::ensureVisibility() {
+  if (visibilityFbo_) return visibilityFbo_;
+  visibilityColor_ = texture(GL_RGBA32UI, width_, height_);
+  glCreateFramebuffers(1, &visibilityFbo_);
+  glNamedFramebufferTexture(visibilityFbo_, GL_COLOR_ATTACHMENT0, visibilityColor_, 0);
+  glNamedFramebufferTexture(visibilityFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+  requireComplete(visibilityFbo_, "visibility");
+  return visibilityFbo_;
 }
 
 }  // namespace radview::gl

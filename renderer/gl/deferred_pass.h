@@ -1,0 +1,43 @@
+#pragma once
+// The C1 interpolants exactly per pixel, deferred (a visibility buffer): one raster pass of the
+// element triangles, as cheap as Gouraud's, writes which triangle each pixel sees and the
+// barycentric coordinates of its surface point (with depth); one full-screen pass then
+// evaluates the Bezier piece holding that point from control values uploaded once per mesh
+// (gl/patch_nets.h). Each visible pixel is evaluated once, whatever the depth complexity, and
+// the GPU holds 36 bytes of corners and 360 (Clough-Tocher) or 456 (Powell-Sabin) bytes of
+// control values per triangle, where drawing every piece as its own triangle with its net on
+// each vertex took 1,440 and 2,880 (C&W §9.2.2).
+#include "gl/patch_nets.h"
+#include "gl/render_targets.h"
+#include "gl/shader_program.h"
+
+#include <epoxy/gl.h>
+
+namespace radview::gl {
+
+class DeferredPass {
+ public:
+  DeferredPass();
+  ~DeferredPass();
+  DeferredPass(const DeferredPass&) = delete;
+  DeferredPass& operator=(const DeferredPass&) = delete;
+
+  // Uploads the triangles and their control values; nothing of `nets` is kept.
+  void upload(const PatchNets& nets);
+  size_t triangles() const { return triangles_; }
+  // Linear radiosity into `target` (a framebuffer sharing targets' depth, cleared, with depth
+  // testing set up by the caller, who also restores it): the visibility raster into targets'
+  // visibility buffer, then the evaluation into `target`, leaving the surfaces' depth behind.
+  void draw(const glm::mat4& clipFromWorld, RenderTargets& targets, GLuint target);
+
+ private:
+  ShaderProgram visibility_{{"visibility.vert", "visibility.frag"}};
+  // One evaluation program per degree, quadratic [0] and cubic [1].
+  ShaderProgram resolve_[2] = {ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 2"}),
+                               ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 3"})};
+  GLuint vao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
+  size_t triangles_ = 0;
+  int degree_ = 3;
+};
+
+}  // namespace radview::gl

@@ -1,0 +1,115 @@
+// Frame time of the interpolants at scale: the Cornell box meshed finer and finer (10^4 to
+// 10^6 elements), rendered headless through EGL at 1920x1080 from the scene's camera. Methods
+// are interleaved frame by frame, round after round, so that a shared machine's slow spells
+// fall on all of them alike; each method's median is reported with its interquartile range, and
+// its ratio to Gouraud's median of the same rounds. Seconds to the first frame (pieces built,
+// uploaded, drawn, finished) are measured once per method.
+//   build/radview_scale_bench [--element-size S]... [--rounds N] [--size WxH]
+#include "core/camera.h"
+#include "gl/egl_context.h"
+#include "gl/mesh_renderer.h"
+#include "mesh/load_file.h"
+#include "solve/direct_light.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace radview::gl {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+struct Variant {
+  const char* name;
+  ShadingMethod method;
+  int tessellation;
+};
+
+double quantile(std::vector<double> v, double q) {
+  std::sort(v.begin(), v.end());
+  const double at = q * double(v.size() - 1);
+  const size_t i = size_t(at);
+  return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
+}
+
+void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height) {
+  const auto meshStart = Clock::now();
+  const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
+  const double meshSeconds = secondsSince(meshStart);
+  const Camera camera = cameraFromSpec("file", mesh.bounds(), file.scene.cameras);
+  const std::vector<Variant> variants = {
+      {"gouraud", ShadingMethod::Gouraud, 0},          {"flat", ShadingMethod::Flat, 0},
+      {"scanline-gouraud", ShadingMethod::ScanlineGouraud, 0}, {"bilinear", ShadingMethod::Bilinear, 0},
+      {"quadratic", ShadingMethod::Quadratic, 0},      {"c1-quadratic", ShadingMethod::C1Quadratic, 0},
+      {"clough-tocher", ShadingMethod::CloughTocher, 0}};
+  // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
+  std::vector<std::unique_ptr<MeshRenderer>> renderers;
+  std::vector<double> firstFrame;
+  for (const Variant& v : variants) {
+    const auto start = Clock::now();
+    renderers.push_back(std::make_unique<MeshRenderer>());
+    renderers.back()->setMesh(mesh);
+    RenderSettings settings;
+    settings.method = v.method;
+    settings.tessellation = v.tessellation;
+    renderers.back()->render(camera, settings, width, height);
+    glFinish();
+    firstFrame.push_back(secondsSince(start));
+  }
+  std::vector<std::vector<double>> ms(variants.size());
+  for (int round = 0; round < rounds; ++round)
+    for (size_t i = 0; i < variants.size(); ++i) {
+      RenderSettings settings;
+      settings.method = variants[i].method;
+      settings.tessellation = variants[i].tessellation;
+      const auto start = Clock::now();
+      renderers[i]->render(camera, settings, width, height);
+      glFinish();
+      ms[i].push_back(1e3 * secondsSince(start));
+    }
+  std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n",
+              mesh.elements.size(), elementSize, meshSeconds, width, height, rounds);
+  std::printf("| method | median ms | IQR ms | / Gouraud | first frame s |\n|---|---|---|---|---|\n");
+  const double gouraud = quantile(ms[0], 0.5);
+  for (size_t i = 0; i < variants.size(); ++i)
+    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i]);
+  std::fflush(stdout);
+}
+
+}  // namespace
+}  // namespace radview::gl
+
+int main(int argc, char** argv) {
+  using namespace radview;
+  std::vector<double> sizes;
+  int rounds = 15, width = 1920, height = 1080;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--element-size")) sizes.push_back(std::atof(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%dx%d", &width, &height);
+    else {
+      std::fprintf(stderr, "radview_scale_bench: unknown option %s\n", argv[i]);
+      return 2;
+    }
+  }
+  if (sizes.empty()) sizes = {0.01, 0.005};
+  try {
+    gl::EglContext context;
+    std::printf("%s\n", context.description().c_str());
+    const LoadedFile file = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf");
+    for (double s : sizes) gl::measure(file, s, rounds, width, height);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "radview_scale_bench: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
