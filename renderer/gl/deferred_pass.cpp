@@ -1,5 +1,11 @@
 #include "gl/deferred_pass.h"
 
+#include "core/error.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
 namespace radview::gl {
 
 DeferredPass::DeferredPass() {
@@ -22,12 +28,37 @@ DeferredPass::~DeferredPass() {
   glDeleteTextures(1, &netsTexture_);
 }
 
-void DeferredPass::upload(const PatchNets& nets) {
-  glNamedBufferData(corners_, nets.corners.size() * sizeof(glm::vec3), nets.corners.data(), GL_STATIC_DRAW);
-  glNamedBufferData(nets_, nets.nets.size() * sizeof(glm::vec4), nets.nets.data(), GL_STATIC_DRAW);
+void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
+  const size_t vec4s = netVec4s(degree);
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (triangles * vec4s > size_t(maxTexels))
+    throw Error("per-pixel " + std::string(degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": " +
+                std::to_string(triangles) + " triangles need " + std::to_string(triangles * vec4s) +
+                " texels of control values, more than this OpenGL's buffer textures hold (" +
+                std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
+  glNamedBufferData(corners_, GLsizeiptr(3 * triangles * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
+  glNamedBufferData(nets_, GLsizeiptr(vec4s * triangles * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
+  constexpr size_t kBlock = 16384;
+  std::vector<glm::vec3> corners(3 * std::min(kBlock, triangles));
+  std::vector<glm::vec4> nets(vec4s * std::min(kBlock, triangles));
+  for (size_t first = 0; first < triangles; first += kBlock) {
+    const size_t count = std::min(kBlock, triangles - first);
+    fill(first, count, corners.data(), nets.data());
+    glNamedBufferSubData(corners_, GLintptr(3 * first * sizeof(glm::vec3)), GLsizeiptr(3 * count * sizeof(glm::vec3)),
+                         corners.data());
+    glNamedBufferSubData(nets_, GLintptr(vec4s * first * sizeof(glm::vec4)), GLsizeiptr(vec4s * count * sizeof(glm::vec4)),
+                         nets.data());
+  }
   glTextureBuffer(netsTexture_, GL_RGBA32F, nets_);
-  triangles_ = nets.triangles();
-  degree_ = nets.degree;
+  triangles_ = triangles;
+  degree_ = degree;
+}
+
+void DeferredPass::clear() {
+  glNamedBufferData(corners_, 0, nullptr, GL_STATIC_DRAW);
+  glNamedBufferData(nets_, 0, nullptr, GL_STATIC_DRAW);
+  triangles_ = 0;
 }
 
 void DeferredPass::draw(const glm::mat4& clipFromWorld, RenderTargets& targets, GLuint target) {

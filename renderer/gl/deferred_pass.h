@@ -13,6 +13,8 @@
 
 #include <epoxy/gl.h>
 
+#include <functional>
+
 namespace radview::gl {
 
 class DeferredPass {
@@ -22,8 +24,14 @@ class DeferredPass {
   DeferredPass(const DeferredPass&) = delete;
   DeferredPass& operator=(const DeferredPass&) = delete;
 
-  // Uploads the triangles and their control values; nothing of `nets` is kept.
-  void upload(const PatchNets& nets);
+  // fill(first, count, corners, nets) writes `count` triangles from `first` on: 3 corners and
+  // netVec4s(degree) vec4 of net each (gl/patch_nets.h).
+  using NetFill = std::function<void(size_t first, size_t count, glm::vec3* corners, glm::vec4* nets)>;
+  // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them a
+  // block at a time, each block uploaded before the next: the CPU never holds more than one.
+  // Throws Error for more than this OpenGL's buffer textures hold.
+  void upload(size_t triangles, int degree, const NetFill& fill);
+  void clear();  // frees the GPU's copy
   size_t triangles() const { return triangles_; }
   // Linear radiosity into `target` (a framebuffer sharing targets' depth, cleared, with depth
   // testing set up by the caller, who also restores it): the visibility raster into targets'

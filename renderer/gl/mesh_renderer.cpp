@@ -1,6 +1,7 @@
 #include "gl/mesh_renderer.h"
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "core/strings.h"
 #include "gl/patch_nets.h"
 #include "gl/patch_vertices.h"
@@ -203,27 +204,51 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
 
 namespace {
 
-// The Bezier pieces of a quadratic or C1 method on `mesh`, each output when asked for: the
-// pieces as vertices (the Bezier pass), as nets (the deferred pass, C1 methods only) and the
-// lines that split elements into them (none for quadratic elements).
-void buildPieces(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
-                 std::vector<BezierVertex>* vertices, PatchNets* nets, std::vector<glm::vec3>& split) {
-  if (method == ShadingMethod::Quadratic) {
-    if (vertices) *vertices = quadraticLagrangeVertices(mesh);  // its serendipity quads last (uploadMesh counts them)
-    return;
-  }
+// The Bezier pieces of a quadratic or C1 method on `mesh` as the Bezier pass draws them, and
+// when `split` is given the lines that split elements into them (none for quadratic elements).
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
+                                        std::vector<glm::vec3>* split) {
+  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh);  // its serendipity quads last
   const SurfaceTriangulation surface(mesh);
   const CornerGradients gradients = vertexGradients(surface, true);
   if (method == ShadingMethod::CloughTocher) {
     const auto patches = buildCloughTocherPatches(surface, gradients, variant);
-    if (vertices) *vertices = cloughTocherVertices(patches);
-    if (nets) *nets = cloughTocherNets(patches);
-    split = cloughTocherSplitLines(patches);
+    if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
+    return cloughTocherVertices(patches);
+  }
+  const auto patches = buildPowellSabinPatches(surface, gradients);
+  if (split) *split = splitLines(patches, kPowellSabinSplitPoints);
+  return powellSabinVertices(patches);
+}
+
+// Element triangle by element triangle, make(t)'s patch into the deferred pass, built on every
+// core a block at a time and never kept; its split lines into `split` when given.
+template <typename MakePatch>
+void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t splitPoints, const MakePatch& make,
+                   std::vector<glm::vec3>* split) {
+  if (split) split->assign(splitPoints * triangles, glm::vec3(0.0f));
+  pass.upload(triangles, degree, [&](size_t first, size_t count, glm::vec3* corners, glm::vec4* nets) {
+    parallelFor(count, [&](size_t i) {
+      const auto patch = make(uint32_t(first + i));
+      writeNet(patch, corners + 3 * i, nets + netVec4s(degree) * i);
+      if (split) writeSplitLines(patch, &(*split)[splitPoints * (first + i)]);
+    });
+  });
+}
+
+// A C1 method's pieces on `mesh`, straight into the deferred pass.
+void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
+                    std::vector<glm::vec3>* split) {
+  const SurfaceTriangulation surface(mesh);
+  const CornerGradients gradients = vertexGradients(surface, true);
+  const size_t triangles = surface.triangles().size();
+  if (method == ShadingMethod::CloughTocher) {
+    streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
+                  [&](uint32_t t) { return cloughTocherPatch(surface, gradients, variant, t); }, split);
   } else {
-    const auto patches = buildPowellSabinPatches(surface, gradients);
-    if (vertices) *vertices = powellSabinVertices(patches);
-    if (nets) *nets = powellSabinNets(patches);
-    split = powellSabinSplitLines(patches);
+    const std::vector<Vec3> incenters = triangleIncenters(surface);
+    streamPatches(pass, triangles, 2, kPowellSabinSplitPoints,
+                  [&](uint32_t t) { return powellSabinPatch(surface, gradients, incenters, t); }, split);
   }
 }
 
@@ -239,27 +264,26 @@ bool MeshRenderer::isDeferred(ShadingMethod method, const BezierEvaluation& eval
 
 void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) {
   const int wanted = piecesKey(settings.method, settings.cloughTocher);
-  if ((deferred ? deferredFor_ : patchesFor_) == wanted && splitFor_ == wanted) return;
-  std::vector<BezierVertex> vertices;
-  PatchNets nets;
+  if ((deferred ? deferredFor_ : patchesFor_) == wanted && (!settings.splitLines || splitFor_ == wanted)) return;
   std::vector<glm::vec3> split;
-  buildPieces(mesh_, settings.method, settings.cloughTocher, deferred ? nullptr : &vertices, deferred ? &nets : nullptr,
-              split);
+  std::vector<glm::vec3>* splitWanted = settings.splitLines ? &split : nullptr;
+  // One of the two passes holds the method's pieces at a time, the other's freed first: memory
+  // stays what the view needs.
+  if (deferred) {
+    bezierPass_.upload({}, 3);
+    patchesFor_ = -1;
+    uploadDeferred(mesh_, settings.method, settings.cloughTocher, deferred_, splitWanted);
+    deferredFor_ = wanted;
+  } else {
+    deferred_.clear();
+    deferredFor_ = -1;
+    bezierPass_.upload(pieceVertices(mesh_, settings.method, settings.cloughTocher, splitWanted),
+                       degreeOf(settings.method));
+    patchesFor_ = wanted;
+  }
   glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
   splitVertices_ = static_cast<GLsizei>(split.size());
-  splitFor_ = wanted;
-  // One of the two passes holds the method's pieces at a time: memory stays what the view needs.
-  if (deferred) {
-    deferred_.upload(nets);
-    bezierPass_.upload({}, 3);
-    deferredFor_ = wanted;
-    patchesFor_ = -1;
-  } else {
-    bezierPass_.upload(std::move(vertices), degreeOf(settings.method));
-    deferred_.upload(PatchNets{});
-    patchesFor_ = wanted;
-    deferredFor_ = -1;
-  }
+  splitFor_ = settings.splitLines ? wanted : -1;
 }
 
 void MeshRenderer::uploadControlNet(double heightScale) {
@@ -374,16 +398,12 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   if (compareMethod && settings.comparisonMethod >= ShadingMethod::Quadratic &&
       (comparisonDeferred || settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
-    std::vector<BezierVertex> vertices;
-    PatchNets nets;
-    std::vector<glm::vec3> split;
-    buildPieces(mesh_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred ? nullptr : &vertices,
-                comparisonDeferred ? &nets : nullptr, split);
     if (comparisonDeferred) {
-      comparisonDeferred_.upload(nets);
+      uploadDeferred(mesh_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred_, nullptr);
       comparisonDeferredFor_ = comparisonKey;
     } else {
-      comparisonPass_.upload(std::move(vertices), degreeOf(settings.comparisonMethod));
+      comparisonPass_.upload(pieceVertices(mesh_, settings.comparisonMethod, settings.cloughTocher, nullptr),
+                             degreeOf(settings.comparisonMethod));
       comparisonPatchesFor_ = comparisonKey;
     }
   }

@@ -81,27 +81,21 @@ std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPat
   return out;
 }
 
-std::vector<glm::vec3> cloughTocherSplitLines(const std::vector<CloughTocherPatch>& patches) {
-  std::vector<glm::vec3> out;
-  for (const CloughTocherPatch& p : patches)
-    for (const Vec3& V : p.frame.V) {
-      out.push_back(glm::vec3(V));
-      out.push_back(glm::vec3(p.C));
-    }
-  return out;
+void writeSplitLines(const CloughTocherPatch& patch, glm::vec3* out) {
+  for (const Vec3& V : patch.frame.V) {
+    *out++ = glm::vec3(V);
+    *out++ = glm::vec3(patch.C);
+  }
 }
 
-std::vector<glm::vec3> powellSabinSplitLines(const std::vector<PowellSabinPatch>& patches) {
-  std::vector<glm::vec3> out;
-  for (const PowellSabinPatch& p : patches)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 &a = p.frame.V[k], &b = p.frame.V[(k + 1) % 3];
-      for (const Vec3& end : {a, (1.0 - p.t[k]) * a + p.t[k] * b}) {
-        out.push_back(glm::vec3(p.Z));
-        out.push_back(glm::vec3(end));
-      }
+void writeSplitLines(const PowellSabinPatch& patch, glm::vec3* out) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 &a = patch.frame.V[k], &b = patch.frame.V[(k + 1) % 3];
+    for (const Vec3& end : {a, (1.0 - patch.t[k]) * a + patch.t[k] * b}) {
+      *out++ = glm::vec3(patch.Z);
+      *out++ = glm::vec3(end);
     }
-  return out;
+  }
 }
 
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches) {

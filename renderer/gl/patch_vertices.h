@@ -31,10 +31,18 @@ struct BezierVertex {
 std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, size_t* serendipityStart = nullptr);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
 
-// The lines that split each element into its pieces, two points per segment: Clough-Tocher
-// corners to the centroid; Powell-Sabin incenter to the corners and to the edge split points.
-std::vector<glm::vec3> cloughTocherSplitLines(const std::vector<CloughTocherPatch>& patches);
-std::vector<glm::vec3> powellSabinSplitLines(const std::vector<PowellSabinPatch>& patches);
+// The lines that split an element into its pieces, two points per segment, written at `out`:
+// Clough-Tocher corners to the centroid; Powell-Sabin incenter to the corners and to the edge
+// split points.
+inline constexpr size_t kCloughTocherSplitPoints = 6, kPowellSabinSplitPoints = 12;
+void writeSplitLines(const CloughTocherPatch& patch, glm::vec3* out);
+void writeSplitLines(const PowellSabinPatch& patch, glm::vec3* out);
+template <typename Patch>
+std::vector<glm::vec3> splitLines(const std::vector<Patch>& patches, size_t pointsPerPatch) {
+  std::vector<glm::vec3> out(pointsPerPatch * patches.size());
+  for (size_t p = 0; p < patches.size(); ++p) writeSplitLines(patches[p], &out[pointsPerPatch * p]);
+  return out;
+}
 std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch>& patches);
 
 // The control net of the radiosity surface (fig. 9.13), two points per segment. The surface

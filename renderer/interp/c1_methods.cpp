@@ -3,6 +3,9 @@
 #include "interp/c1_patches.h"
 #include "interp/methods.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace radview {
 
 namespace {
@@ -14,9 +17,26 @@ class C1Interpolant : public Interpolant {
   C1Interpolant(const RadiosityMesh& mesh, const InterpolantOptions& options, Build build)
       : surface_(mesh), patches_(build(surface_, vertexGradients(surface_, options.useStoredGradients))) {}
 
+  // SurfaceTriangulation::locate's choice of triangle (the one the point is deepest inside),
+  // from the frames the patches already hold.
   Sample evaluate(uint32_t element, const Vec3& x) const override {
-    const Patch& patch = patches_[surface_.locate(element, x).triangle];
-    return radview::evaluate(patch, patch.frame(x));
+    const Patch* best = nullptr;
+    Vec3 lambda(0.0);
+    double bestInside = -std::numeric_limits<double>::infinity();
+    for (uint32_t t : surface_.trianglesOf(element)) {
+      const Vec3 w = patches_[t].frame(x);
+      const double inside = std::min(w.x, std::min(w.y, w.z));
+      if (inside > bestInside || !best) {
+        bestInside = inside;
+        best = &patches_[t];
+        lambda = w;
+      }
+    }
+    if (!best) {  // an element left without triangles: locate's answer
+      const Patch& patch = patches_[surface_.locate(element, x).triangle];
+      return radview::evaluate(patch, patch.frame(x));
+    }
+    return radview::evaluate(*best, lambda);
   }
 
  private:

@@ -13,14 +13,23 @@
 
 namespace radview {
 
-// One Clough-Tocher element per triangle of `surface` (C&W §9.2.2).
+// Triangle t's Clough-Tocher element (C&W §9.2.2): what buildCloughTocherPatches holds for it,
+// for callers that stream the elements rather than keep them all.
+CloughTocherPatch cloughTocherPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients,
+                                    CloughTocherVariant variant, uint32_t t);
+// One Clough-Tocher element per triangle of `surface`, built on every core.
 std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulation& surface,
                                                         const CornerGradients& gradients,
                                                         CloughTocherVariant variant);
 
-// One Powell-Sabin element per triangle (Reichert's C1 quadratic, C&W §9.2.2): split at the
-// incenters, each edge cut where the segment joining the incenters on its two sides crosses
-// it (its midpoint where the edge is not C1), which is what makes neighbours join C1.
+// The incenter of every triangle of `surface`, which Powell-Sabin's edge split points join.
+std::vector<Vec3> triangleIncenters(const SurfaceTriangulation& surface);
+// Triangle t's Powell-Sabin element (Reichert's C1 quadratic, C&W §9.2.2): split at its
+// incenter, each edge cut where the segment joining the incenters on its two sides crosses it
+// (its midpoint where the edge is not C1), which is what makes neighbours join C1.
+PowellSabinPatch powellSabinPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients,
+                                  const std::vector<Vec3>& incenters, uint32_t t);
+// One Powell-Sabin element per triangle, built on every core.
 std::vector<PowellSabinPatch> buildPowellSabinPatches(const SurfaceTriangulation& surface,
                                                       const CornerGradients& gradients);
 
