@@ -75,24 +75,22 @@ void RenderTargets::resize(int width, int height) {
   height_ = height;
 }
 
+GLuint RenderTargets::ensureWithDepth(GLenum format, GLuint& color, GLuint& fbo, const char* name) {
+  if (fbo) return fbo;
+  color = texture(format, width_, height_);
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+  glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_, 0);
+  requireComplete(fbo, name);
+  return fbo;
+}
+
 GLuint RenderTargets::ensureComparison() {
-  if (comparisonFbo_) return comparisonFbo_;
-  comparisonColor_ = texture(GL_RGBA32F, width_, height_);
-  glCreateFramebuffers(1, &comparisonFbo_);
-  glNamedFramebufferTexture(comparisonFbo_, GL_COLOR_ATTACHMENT0, comparisonColor_, 0);
-  glNamedFramebufferTexture(comparisonFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-  requireComplete(comparisonFbo_, "comparison");
-  return comparisonFbo_;
+  return ensureWithDepth(GL_RGBA32F, comparisonColor_, comparisonFbo_, "comparison");
 }
 
 GLuint RenderTargets::ensureVisibility() {
-  if (visibilityFbo_) return visibilityFbo_;
-  visibilityColor_ = texture(GL_RGBA32UI, width_, height_);
-  glCreateFramebuffers(1, &visibilityFbo_);
-  glNamedFramebufferTexture(visibilityFbo_, GL_COLOR_ATTACHMENT0, visibilityColor_, 0);
-  glNamedFramebufferTexture(visibilityFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
-  requireComplete(visibilityFbo_, "visibility");
-  return visibilityFbo_;
+  return ensureWithDepth(GL_RGBA32UI, visibilityColor_, visibilityFbo_, "visibility");
 }
 
 }  // namespace radview::gl

@@ -36,6 +36,8 @@ class RenderTargets {
 
  private:
   void release();
+  // `fbo` with a new `format` texture as `color` and the shared depth, unless made already.
+  GLuint ensureWithDepth(GLenum format, GLuint& color, GLuint& fbo, const char* name);
   int width_ = 0, height_ = 0;
   GLuint linearFbo_ = 0, displayFbo_ = 0;
   GLuint linearColor_ = 0, displayColor_ = 0, depth_ = 0;
