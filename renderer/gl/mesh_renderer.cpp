@@ -191,12 +191,12 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
   glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
-  mesh_ = mesh;
+  mesh_ = std::move(mesh);
   brightestLuminance_ = 0.0;
-  for (const Element& e : mesh.elements)
-    if (!mesh.materials[e.material].isEmitter())
+  for (const Element& e : mesh_.elements)
+    if (!mesh_.materials[e.material].isEmitter())
       for (uint32_t n : e.corners)
-        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
+        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh_.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
   if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
   repairedDrawn_ = repairTVertices;  // only once everything above has succeeded

@@ -1,5 +1,8 @@
 #include "interp/vertex_gradients.h"
 
+#include "core/parallel_for.h"
+
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -123,27 +126,47 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
         if (other >= 0) sectors.join(3 * t + corner, 3 * uint32_t(u) + other);
       }
     }
-  std::map<uint32_t, std::vector<uint32_t>> members;
-  for (uint32_t c = 0; c < 3 * triangles.size(); ++c) members[sectors.find(c)].push_back(c);
+  // Each sector's corners, in increasing corner order, as lists in one array (counting sort):
+  // sector s holds members[first[s] .. first[s + 1]); sectorOf[c] is corner c's. Sectors are
+  // numbered in the order of their roots.
+  const uint32_t cornerCount = uint32_t(3 * triangles.size());
+  std::vector<uint32_t> sectorOf(cornerCount), sectorOfRoot(cornerCount, UINT32_MAX);
+  for (uint32_t c = 0; c < cornerCount; ++c) sectorOfRoot[sectors.find(c)] = 0;
+  uint32_t sectorCount = 0;
+  for (uint32_t& s : sectorOfRoot)
+    if (s == 0) s = sectorCount++;
+  std::vector<uint32_t> first(sectorCount + 1, 0), members(cornerCount);
+  for (uint32_t c = 0; c < cornerCount; ++c) ++first[(sectorOf[c] = sectorOfRoot[sectors.find(c)]) + 1];
+  std::vector<uint32_t>().swap(sectorOfRoot);
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  {
+    std::vector<uint32_t> next(first.begin(), first.end() - 1);
+    for (uint32_t c = 0; c < cornerCount; ++c) members[next[sectorOf[c]]++] = c;
+  }
 
-  std::map<uint32_t, Gradient> sectorGradient;
-  for (const auto& [root, corners] : members) {
-    const uint32_t t0 = corners.front() / 3;
-    const uint32_t node = triangles[t0].node[corners.front() % 3];
+  // Each sector's gradient, independent of the others': on every core.
+  std::vector<Gradient> sectorGradient(sectorCount);
+  parallelFor(sectorCount, [&](size_t s) {
+    const uint32_t* corners = &members[first[s]];
+    const size_t count = first[s + 1] - first[s];
+    const uint32_t t0 = corners[0] / 3;
+    const uint32_t node = triangles[t0].node[corners[0] % 3];
     // The sector's plane from a triangle that has one: a zero-area triangle (validateMesh
     // refuses them, but a mesh built in code can hold one) has a zero normal, and the plane
     // basis and least-squares gradient built on it were NaN (two coincident nodes made the
     // C1 interpolants abort in buildPowellSabin / buildCloughTocher). No plane at all: 0.
     Vec3 n(0.0);
-    for (uint32_t c : corners)
-      if (n == Vec3(0.0)) n = surface.normal(c / 3);
+    for (size_t i = 0; i < count && n == Vec3(0.0); ++i) n = surface.normal(corners[i] / 3);
     if (n == Vec3(0.0)) {
-      sectorGradient[root] = Gradient{};
-      continue;
+      sectorGradient[s] = Gradient{};
+      return;
     }
     const Vec3 x0 = mesh.nodes[node].position;
-    std::set<uint32_t> elements;
-    for (uint32_t c : corners) elements.insert(triangles[c / 3].element);
+    // The sector's elements, in increasing order (the sum below adds them in that order).
+    std::vector<uint32_t> elements;
+    for (size_t i = 0; i < count; ++i) elements.push_back(triangles[corners[i] / 3].element);
+    std::sort(elements.begin(), elements.end());
+    elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
     bool allQuadratic = true;
     for (uint32_t e : elements) allQuadratic &= mesh.elements[e].order() == ElementOrder::Quadratic;
     Gradient g{};
@@ -160,15 +183,19 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
       }
       for (int c = 0; c < 3; ++c) g[c] /= std::max(used, 1);
     } else {
-      std::set<uint32_t> seen{node};
+      // The other nodes of the sector's triangles, each once, in the order first met.
+      std::vector<uint32_t> seen{node};
       std::vector<std::pair<Vec3, Rgb>> neighbours;
-      for (uint32_t c : corners)
-        for (uint32_t m : triangles[c / 3].node)
-          if (seen.insert(m).second) neighbours.push_back({mesh.nodes[m].position, mesh.nodes[m].B});
+      for (size_t i = 0; i < count; ++i)
+        for (uint32_t m : triangles[corners[i] / 3].node)
+          if (std::find(seen.begin(), seen.end(), m) == seen.end()) {
+            seen.push_back(m);
+            neighbours.push_back({mesh.nodes[m].position, mesh.nodes[m].B});
+          }
       g = leastSquaresGradient(x0, mesh.nodes[node].B, neighbours, n);
     }
-    sectorGradient[root] = g;
-  }
+    sectorGradient[s] = g;
+  });
 
   // C0 edges: the sectors on either side agree along the edge.
   struct Constraint {
@@ -193,7 +220,7 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
         const int corner = (k + end) % 3;
         const int other = surface.cornerAt(uint32_t(u), triangles[t].node[corner]);
         if (other < 0) continue;
-        const uint32_t a = sectors.find(3 * t + corner), b = sectors.find(3 * uint32_t(u) + other);
+        const uint32_t a = sectorOf[3 * t + corner], b = sectorOf[3 * uint32_t(u) + other];
         const uint32_t far = surface.topology().positionId(triangles[t].node[(k + 1 - end) % 3]);
         if (a == b || !done.insert({std::min(a, b), std::max(a, b), far}).second) continue;
         Rgb slope;
@@ -225,8 +252,7 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
     }
   }
 
-  for (const auto& [root, corners] : members)
-    for (uint32_t c : corners) out[c / 3][c % 3] = sectorGradient[root];
+  for (uint32_t c = 0; c < cornerCount; ++c) out[c / 3][c % 3] = sectorGradient[sectorOf[c]];
   return out;
 }
 

@@ -4,7 +4,7 @@
 // fall on all of them alike; each method's median is reported with its interquartile range, and
 // its ratio to Gouraud's median of the same rounds. Seconds to the first frame (pieces built,
 // uploaded, drawn, finished) are measured once per method.
-//   build/radview_scale_bench [--element-size S]... [--rounds N] [--size WxH]
+//   build/radview_scale_bench [--element-size S]... [--rounds N] [--size WxH] [--methods gouraud,clough-tocher]
 #include "core/camera.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
@@ -40,16 +40,23 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
 }
 
-void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height) {
+void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height,
+             const std::string& only) {
   const auto meshStart = Clock::now();
   const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
   const double meshSeconds = secondsSince(meshStart);
   const Camera camera = cameraFromSpec("file", mesh.bounds(), file.scene.cameras);
-  const std::vector<Variant> variants = {
-      {"gouraud", ShadingMethod::Gouraud, 0},          {"flat", ShadingMethod::Flat, 0},
-      {"scanline-gouraud", ShadingMethod::ScanlineGouraud, 0}, {"bilinear", ShadingMethod::Bilinear, 0},
-      {"quadratic", ShadingMethod::Quadratic, 0},      {"c1-quadratic", ShadingMethod::C1Quadratic, 0},
-      {"clough-tocher", ShadingMethod::CloughTocher, 0}};
+  std::vector<Variant> variants;
+  // Gouraud first, always: the others are measured against it.
+  for (const Variant& v : std::vector<Variant>{{"gouraud", ShadingMethod::Gouraud, 0},
+                                               {"flat", ShadingMethod::Flat, 0},
+                                               {"scanline-gouraud", ShadingMethod::ScanlineGouraud, 0},
+                                               {"bilinear", ShadingMethod::Bilinear, 0},
+                                               {"quadratic", ShadingMethod::Quadratic, 0},
+                                               {"c1-quadratic", ShadingMethod::C1Quadratic, 0},
+                                               {"clough-tocher", ShadingMethod::CloughTocher, 0}})
+    if (variants.empty() || only.empty() || ("," + only + ",").find("," + std::string(v.name) + ",") != std::string::npos)
+      variants.push_back(v);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
   std::vector<std::unique_ptr<MeshRenderer>> renderers;
   std::vector<double> firstFrame;
@@ -92,10 +99,12 @@ int main(int argc, char** argv) {
   using namespace radview;
   std::vector<double> sizes;
   int rounds = 15, width = 1920, height = 1080;
+  std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--element-size")) sizes.push_back(std::atof(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%dx%d", &width, &height);
+    else if (!std::strcmp(argv[i], "--methods")) methods = argv[i + 1];
     else {
       std::fprintf(stderr, "radview_scale_bench: unknown option %s\n", argv[i]);
       return 2;
@@ -106,7 +115,7 @@ int main(int argc, char** argv) {
     gl::EglContext context;
     std::printf("%s\n", context.description().c_str());
     const LoadedFile file = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf");
-    for (double s : sizes) gl::measure(file, s, rounds, width, height);
+    for (double s : sizes) gl::measure(file, s, rounds, width, height, methods);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "radview_scale_bench: %s\n", e.what());
     return 1;
