@@ -1,11 +1,9 @@
 #include "gl/mesh_renderer.h"
 
 #include "core/error.h"
-#include "core/parallel_for.h"
 #include "core/strings.h"
-#include "gl/patch_nets.h"
+#include "gl/method_pieces.h"
 #include "gl/patch_vertices.h"
-#include "interp/c1_patches.h"
 #include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
 
@@ -203,54 +201,6 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
 }
 
 namespace {
-
-// The Bezier pieces of a quadratic or C1 method on `mesh` as the Bezier pass draws them, and
-// when `split` is given the lines that split elements into them (none for quadratic elements).
-std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
-                                        std::vector<glm::vec3>* split) {
-  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh);  // its serendipity quads last
-  const SurfaceTriangulation surface(mesh);
-  const CornerGradients gradients = vertexGradients(surface, true);
-  if (method == ShadingMethod::CloughTocher) {
-    const auto patches = buildCloughTocherPatches(surface, gradients, variant);
-    if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
-    return cloughTocherVertices(patches);
-  }
-  const auto patches = buildPowellSabinPatches(surface, gradients);
-  if (split) *split = splitLines(patches, kPowellSabinSplitPoints);
-  return powellSabinVertices(patches);
-}
-
-// Element triangle by element triangle, make(t)'s patch into the deferred pass, built on every
-// core a block at a time and never kept; its split lines into `split` when given.
-template <typename MakePatch>
-void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t splitPoints, const MakePatch& make,
-                   std::vector<glm::vec3>* split) {
-  if (split) split->assign(splitPoints * triangles, glm::vec3(0.0f));
-  pass.upload(triangles, degree, [&](size_t first, size_t count, glm::vec3* corners, glm::vec4* nets) {
-    parallelFor(count, [&](size_t i) {
-      const auto patch = make(uint32_t(first + i));
-      writeNet(patch, corners + 3 * i, nets + netVec4s(degree) * i);
-      if (split) writeSplitLines(patch, &(*split)[splitPoints * (first + i)]);
-    });
-  });
-}
-
-// A C1 method's pieces on `mesh`, straight into the deferred pass.
-void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
-                    std::vector<glm::vec3>* split) {
-  const SurfaceTriangulation surface(mesh);
-  const CornerGradients gradients = vertexGradients(surface, true);
-  const size_t triangles = surface.triangles().size();
-  if (method == ShadingMethod::CloughTocher) {
-    streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
-                  [&](uint32_t t) { return cloughTocherPatch(surface, gradients, variant, t); }, split);
-  } else {
-    const std::vector<Vec3> incenters = triangleIncenters(surface);
-    streamPatches(pass, triangles, 2, kPowellSabinSplitPoints,
-                  [&](uint32_t t) { return powellSabinPatch(surface, gradients, incenters, t); }, split);
-  }
-}
 
 int piecesKey(ShadingMethod method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
 int degreeOf(ShadingMethod method) { return method == ShadingMethod::CloughTocher ? 3 : 2; }

@@ -1,0 +1,58 @@
+#include "gl/method_pieces.h"
+
+#include "core/parallel_for.h"
+#include "gl/patch_nets.h"
+#include "gl/patch_vertices.h"
+#include "interp/c1_patches.h"
+
+namespace radview::gl {
+
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
+                                        std::vector<glm::vec3>* split) {
+  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh);  // its serendipity quads last
+  const SurfaceTriangulation surface(mesh);
+  const CornerGradients gradients = vertexGradients(surface, true);
+  if (method == ShadingMethod::CloughTocher) {
+    const auto patches = buildCloughTocherPatches(surface, gradients, variant);
+    if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
+    return cloughTocherVertices(patches);
+  }
+  const auto patches = buildPowellSabinPatches(surface, gradients);
+  if (split) *split = splitLines(patches, kPowellSabinSplitPoints);
+  return powellSabinVertices(patches);
+}
+
+namespace {
+
+// Element triangle by element triangle, make(t)'s patch into the deferred pass.
+template <typename MakePatch>
+void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t splitPoints, const MakePatch& make,
+                   std::vector<glm::vec3>* split) {
+  if (split) split->assign(splitPoints * triangles, glm::vec3(0.0f));
+  pass.upload(triangles, degree, [&](size_t first, size_t count, glm::vec3* corners, glm::vec4* nets) {
+    parallelFor(count, [&](size_t i) {
+      const auto patch = make(uint32_t(first + i));
+      writeNet(patch, corners + 3 * i, nets + netVec4s(degree) * i);
+      if (split) writeSplitLines(patch, &(*split)[splitPoints * (first + i)]);
+    });
+  });
+}
+
+}  // namespace
+
+void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
+                    std::vector<glm::vec3>* split) {
+  const SurfaceTriangulation surface(mesh);
+  const CornerGradients gradients = vertexGradients(surface, true);
+  const size_t triangles = surface.triangles().size();
+  if (method == ShadingMethod::CloughTocher) {
+    streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
+                  [&](uint32_t t) { return cloughTocherPatch(surface, gradients, variant, t); }, split);
+  } else {
+    const std::vector<Vec3> incenters = triangleIncenters(surface);
+    streamPatches(pass, triangles, 2, kPowellSabinSplitPoints,
+                  [&](uint32_t t) { return powellSabinPatch(surface, gradients, incenters, t); }, split);
+  }
+}
+
+}  // namespace radview::gl

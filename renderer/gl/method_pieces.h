@@ -1,0 +1,26 @@
+#pragma once
+// The Bezier pieces of a quadratic or C1 method, built from a mesh for the pass that draws
+// them: as vertices for the Bezier pass (tessellated, the radiosity surface, the quadratic
+// method per pixel), or streamed into the deferred pass (the C1 methods per pixel). No GL
+// calls of its own beyond the passes' uploads.
+#include "gl/bezier_pass.h"
+#include "gl/deferred_pass.h"
+#include "gl/mesh_renderer.h"
+
+#include <glm/glm.hpp>
+
+#include <vector>
+
+namespace radview::gl {
+
+// The pieces as the Bezier pass draws them, and when `split` is given the lines that split
+// elements into them (none for quadratic elements).
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
+                                        std::vector<glm::vec3>* split);
+
+// A C1 method's pieces, straight into the deferred pass: each patch built on every core a block
+// of triangles at a time and never kept; its split lines into `split` when given.
+void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
+                    std::vector<glm::vec3>* split);
+
+}  // namespace radview::gl
