@@ -281,7 +281,9 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
     drawPolygons(method == ShadingMethod::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
                  height);
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
-    DeferredPass& pass = comparison ? comparisonDeferred_ : deferred_;
+    // The comparison shares the method's pieces when it is the same method per pixel.
+    const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
+    DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
     pass.draw(clipFromWorld, targets_, GLuint(framebuffer));
     statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
   } else {
@@ -346,7 +348,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
   const bool comparisonDeferred = isDeferred(settings.comparisonMethod, BezierEvaluation{});
   if (compareMethod && settings.comparisonMethod >= ShadingMethod::Quadratic &&
-      (comparisonDeferred || settings.comparisonMethod != settings.method) &&
+      (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     if (comparisonDeferred) {
       uploadDeferred(mesh_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred_, nullptr);
