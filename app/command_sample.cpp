@@ -36,7 +36,7 @@ std::string readAll(std::istream& in) {
   return ss.str();
 }
 
-// A finite double filling all of `word` ('+' allowed in front), as strtod reads it.
+// A finite double filling all of `word`, decimal, a '+' in front allowed as strtod allows it.
 std::optional<double> finiteNumber(std::string_view word) {
   if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
   double v = 0.0;
