@@ -1,3 +1,4 @@
+#include "app/background_open.h"
 #include "app/background_solve.h"
 #include "app/commands.h"
 #include "app/viewer_gather.h"
@@ -214,6 +215,7 @@ int runViewer(const ViewerOptions& options) {
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
 
   BackgroundSolve solve;
+  BackgroundOpen opener;
   ViewerGather gather;
   uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
   state.solveRequested = options.solve && !state.viewed.file.isSolution;
@@ -252,14 +254,18 @@ int runViewer(const ViewerOptions& options) {
       const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
       input.droppedPath.clear();
       state.openRequested = false;
-      // All or nothing: the previous file stays on screen and in the panel unless the new one
-      // both loads and uploads.
+      opener.start(path, options.display.elementSize);
+    }
+    if (opener.running()) state.status = opener.status();
+    // All or nothing: the previous file stays on screen and in the panel unless the new one
+    // both loads and uploads.
+    if (std::optional<BackgroundOpen::Result> opened = opener.take()) {
       try {
-        ViewedFile next = openForViewing(path, options.display.elementSize);
+        if (!opened->viewed) throw Error(opened->error);
         solve.abandon();  // its partial solutions belong to the old scene
-        renderer.setMesh(next.mesh);
+        renderer.setMesh(opened->viewed->mesh);
         ++meshVersion;
-        adoptViewedFile(state, std::move(next));
+        adoptViewedFile(state, std::move(*opened->viewed));
       } catch (const std::exception& e) {
         state.status = e.what();
       }
