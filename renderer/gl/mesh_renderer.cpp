@@ -153,7 +153,8 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   // render() moves the camera's matrix by the same (camera-relative rendering, in effect).
   origin_ = mesh.bounds().center();
   for (Node& node : mesh.nodes) node.position -= origin_;
-  const DisplayMesh display = buildDisplayMesh(mesh);
+  auto topology = std::make_shared<const MeshTopology>(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh, *topology);
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
                     GL_STATIC_DRAW);
@@ -190,6 +191,7 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
   mesh_ = std::move(mesh);
+  topology_ = std::move(topology);
   brightestLuminance_ = 0.0;
   for (const Element& e : mesh_.elements)
     if (!mesh_.materials[e.material].isEmitter())
@@ -222,12 +224,12 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) 
   if (deferred) {
     bezierPass_.upload({}, 3);
     patchesFor_ = -1;
-    uploadDeferred(mesh_, settings.method, settings.cloughTocher, deferred_, splitWanted);
+    uploadDeferred(mesh_, topology_, settings.method, settings.cloughTocher, deferred_, splitWanted);
     deferredFor_ = wanted;
   } else {
     deferred_.clear();
     deferredFor_ = -1;
-    bezierPass_.upload(pieceVertices(mesh_, settings.method, settings.cloughTocher, splitWanted),
+    bezierPass_.upload(pieceVertices(mesh_, topology_, settings.method, settings.cloughTocher, splitWanted),
                        degreeOf(settings.method));
     patchesFor_ = wanted;
   }
@@ -351,10 +353,10 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
       (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     if (comparisonDeferred) {
-      uploadDeferred(mesh_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred_, nullptr);
+      uploadDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred_, nullptr);
       comparisonDeferredFor_ = comparisonKey;
     } else {
-      comparisonPass_.upload(pieceVertices(mesh_, settings.comparisonMethod, settings.cloughTocher, nullptr),
+      comparisonPass_.upload(pieceVertices(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
                              degreeOf(settings.comparisonMethod));
       comparisonPatchesFor_ = comparisonKey;
     }

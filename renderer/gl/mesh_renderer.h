@@ -12,10 +12,12 @@
 #include "gl/shader_program.h"
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
+#include "mesh/topology.h"
 
 #include <epoxy/gl.h>
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -170,6 +172,7 @@ class MeshRenderer {
   void uploadMesh(bool repairTVertices);
   RadiosityMesh original_;      // as set
   RadiosityMesh mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
+  std::shared_ptr<const MeshTopology> topology_;  // mesh_'s, built once for the display mesh and every method's pieces
   Vec3 origin_{0.0};    // the world point at the origin of the coordinates the GPU sees
   double brightestLuminance_ = 1.0;  // of the non-emitting elements' nodes, for the surface view
   // The Bezier pass's settings for this frame.

@@ -7,10 +7,10 @@
 
 namespace radview::gl {
 
-std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
-                                        std::vector<glm::vec3>* split) {
-  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh);  // its serendipity quads last
-  const SurfaceTriangulation surface(mesh);
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
+                                        ShadingMethod method, CloughTocherVariant variant, std::vector<glm::vec3>* split) {
+  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh, *topology);  // its serendipity quads last
+  const SurfaceTriangulation surface(mesh, topology);
   const CornerGradients gradients = vertexGradients(surface, true);
   if (method == ShadingMethod::CloughTocher) {
     const auto patches = buildCloughTocherPatches(surface, gradients, variant);
@@ -40,9 +40,9 @@ void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t spli
 
 }  // namespace
 
-void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
-                    std::vector<glm::vec3>* split) {
-  const SurfaceTriangulation surface(mesh);
+void uploadDeferred(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology, ShadingMethod method,
+                    CloughTocherVariant variant, DeferredPass& pass, std::vector<glm::vec3>* split) {
+  const SurfaceTriangulation surface(mesh, topology);
   const CornerGradients gradients = vertexGradients(surface, true);
   const size_t triangles = surface.triangles().size();
   if (method == ShadingMethod::CloughTocher) {

@@ -6,21 +6,24 @@
 #include "gl/bezier_pass.h"
 #include "gl/deferred_pass.h"
 #include "gl/mesh_renderer.h"
+#include "mesh/topology.h"
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace radview::gl {
 
 // The pieces as the Bezier pass draws them, and when `split` is given the lines that split
 // elements into them (none for quadratic elements).
-std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant,
-                                        std::vector<glm::vec3>* split);
+// `topology` is the mesh's own, shared with the triangulation the pieces are built on.
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
+                                        ShadingMethod method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
 
 // A C1 method's pieces, straight into the deferred pass: each patch built on every core a block
 // of triangles at a time and never kept; its split lines into `split` when given.
-void uploadDeferred(const RadiosityMesh& mesh, ShadingMethod method, CloughTocherVariant variant, DeferredPass& pass,
-                    std::vector<glm::vec3>* split);
+void uploadDeferred(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology, ShadingMethod method,
+                    CloughTocherVariant variant, DeferredPass& pass, std::vector<glm::vec3>* split);
 
 }  // namespace radview::gl

@@ -37,12 +37,13 @@ void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>&
 
 }  // namespace
 
-std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, size_t* serendipityStart) {
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
+                                                    size_t* serendipityStart) {
   std::vector<BezierVertex> out;
   auto position = [&](uint32_t n) { return mesh.nodes[n].position; };
   auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
   std::vector<size_t> serendipity;
-  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, MeshTopology(mesh));
+  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
   // A linear piece over each drawn triangle, T-vertices included (watertightTriangles).
   auto addLinear = [&](size_t e) {
     for (const auto& t : watertightTriangles(mesh, e, tVertices[e]))

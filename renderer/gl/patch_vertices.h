@@ -6,6 +6,7 @@
 // varyings: on llvmpipe that costs about what Gouraud costs, where fetching them from a
 // buffer by primitive id costs 2.5 times as much (../shared/PLATFORM.md). No OpenGL here.
 #include "interp/c1_patches.h"
+#include "mesh/topology.h"
 
 #include <glm/glm.hpp>
 
@@ -28,7 +29,8 @@ struct BezierVertex {
 // triangle patches: their linear pieces come last, from piece *serendipityStart on, so the
 // per-pixel path can leave them to the polygon pass that evaluates them exactly, while the
 // radiosity surface, which needs pieces to lift, still has them (drawn linear there).
-std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, size_t* serendipityStart = nullptr);
+std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
+                                                    size_t* serendipityStart = nullptr);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
 
 // The lines that split an element into its pieces, two points per segment, written at `out`:

@@ -1,6 +1,7 @@
 #include "interp/surface_triangulation.h"
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "geom/polygon.h"
 #include "geom/triangulate_cgal.h"
 #include "interp/bezier_triangle.h"
@@ -8,7 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
+#include <tuple>
 #include <utility>
 
 namespace radview {
@@ -44,9 +45,13 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
       if (topology.positionId(c) == topology.positionId(t.node)) return true;
     return false;
   };
-  if (e.order() == ElementOrder::Linear)
-    for (const TVertex& t : topology.tVertices())
-      if (t.element == element && !isCapApex(t)) inserted[t.edge].push_back({t.t, t.node});
+  if (e.order() == ElementOrder::Linear) {
+    // MeshTopology lists T-vertices by element: this element's are one run of them.
+    const std::vector<TVertex>& all = topology.tVertices();
+    auto t = std::lower_bound(all.begin(), all.end(), element, [](const TVertex& v, uint32_t el) { return v.element < el; });
+    for (; t != all.end() && t->element == element; ++t)
+      if (!isCapApex(*t)) inserted[t->edge].push_back({t->t, t->node});
+  }
   std::vector<BoundaryVertex> boundary;
   for (uint32_t k = 0; k < e.corners.size(); ++k) {
     boundary.push_back({e.corners[k], k});
@@ -97,47 +102,84 @@ std::vector<std::array<int, 3>> delaunayTriangles(const std::vector<Vec3>& polyg
 }  // namespace
 
 SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh)
-    : mesh_(mesh), topology_(mesh), byElement_(mesh.elements.size()) {
+    : SurfaceTriangulation(mesh, std::make_shared<const MeshTopology>(mesh)) {}
+
+SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::shared_ptr<const MeshTopology> topology)
+    : mesh_(mesh), topology_(std::move(topology)) {
+  firstTriangle_.reserve(mesh.elements.size() + 1);
   // Which element edge each triangle edge lies on (-1: a diagonal inside the element).
-  std::vector<std::array<int64_t, 3>> onElementEdge;
-  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
-    const std::vector<BoundaryVertex> boundary = boundaryWithTVertices(mesh, topology_, e);
-    std::vector<Vec3> polygon;
-    for (const BoundaryVertex& v : boundary) polygon.push_back(mesh.nodes[v.node].position);
-    const size_t n = boundary.size();
-    for (const auto& t : delaunayTriangles(polygon)) {
-      SurfaceTriangle triangle;
-      triangle.element = e;
-      std::array<int64_t, 3> edges{};
-      for (int k = 0; k < 3; ++k) {
-        triangle.node[k] = boundary[t[k]].node;
-        const bool boundarySegment = size_t(t[(k + 1) % 3]) == (size_t(t[k]) + 1) % n;
-        edges[k] = boundarySegment ? int64_t(boundary[t[k]].elementEdge) : -1;
+  // Elements are cut in blocks on every core, each block into its own lists, joined in order.
+  struct Cut {
+    std::vector<SurfaceTriangle> triangles;
+    std::vector<std::array<int64_t, 3>> onElementEdge;
+    std::vector<uint32_t> countOf;  // per element of the block
+  };
+  constexpr size_t kBlock = 1024;
+  std::vector<Cut> cuts((mesh.elements.size() + kBlock - 1) / kBlock);
+  parallelFor(cuts.size(), [&](size_t block) {
+    Cut& cut = cuts[block];
+    for (uint32_t e = uint32_t(block * kBlock); e < std::min(mesh.elements.size(), (block + 1) * kBlock); ++e) {
+      const std::vector<BoundaryVertex> boundary = boundaryWithTVertices(mesh, *topology_, e);
+      std::vector<Vec3> polygon;
+      for (const BoundaryVertex& v : boundary) polygon.push_back(mesh.nodes[v.node].position);
+      const size_t n = boundary.size();
+      const std::vector<std::array<int, 3>> triangles = delaunayTriangles(polygon);
+      for (const auto& t : triangles) {
+        SurfaceTriangle triangle;
+        triangle.element = e;
+        std::array<int64_t, 3> edges{};
+        for (int k = 0; k < 3; ++k) {
+          triangle.node[k] = boundary[t[k]].node;
+          const bool boundarySegment = size_t(t[(k + 1) % 3]) == (size_t(t[k]) + 1) % n;
+          edges[k] = boundarySegment ? int64_t(boundary[t[k]].elementEdge) : -1;
+        }
+        cut.triangles.push_back(triangle);
+        cut.onElementEdge.push_back(edges);
       }
-      byElement_[e].push_back(static_cast<uint32_t>(triangles_.size()));
-      triangles_.push_back(triangle);
-      onElementEdge.push_back(edges);
+      cut.countOf.push_back(uint32_t(triangles.size()));
     }
+  }, 1);
+  std::vector<std::array<int64_t, 3>> onElementEdge;
+  for (Cut& cut : cuts) {
+    uint32_t first = uint32_t(triangles_.size());
+    for (uint32_t count : cut.countOf) {
+      firstTriangle_.push_back(first);
+      first += count;
+    }
+    triangles_.insert(triangles_.end(), cut.triangles.begin(), cut.triangles.end());
+    onElementEdge.insert(onElementEdge.end(), cut.onElementEdge.begin(), cut.onElementEdge.end());
+    cut = {};
   }
+  firstTriangle_.push_back(uint32_t(triangles_.size()));
 
   // Neighbours: triangle edges matched through position ids (so the two sides of a C-1 edge,
   // which have distinct nodes, still meet), kept only between triangles of one plane.
-  std::map<std::pair<uint32_t, uint32_t>, std::vector<std::pair<uint32_t, int>>> byEdge;
+  // Every triangle edge once, ordered by its end positions, then by triangle and edge: each
+  // run of equal ends is one edge and its sides.
+  struct Side {
+    uint32_t a, b, triangle, edge;
+    bool operator<(const Side& o) const { return std::tie(a, b, triangle, edge) < std::tie(o.a, o.b, o.triangle, o.edge); }
+  };
+  std::vector<Side> sides;
+  sides.reserve(3 * triangles_.size());
   for (uint32_t t = 0; t < triangles_.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const uint32_t a = topology_.positionId(triangles_[t].node[k]);
-      const uint32_t b = topology_.positionId(triangles_[t].node[(k + 1) % 3]);
-      byEdge[{std::min(a, b), std::max(a, b)}].push_back({t, k});
+    for (uint32_t k = 0; k < 3; ++k) {
+      const uint32_t a = topology_->positionId(triangles_[t].node[k]);
+      const uint32_t b = topology_->positionId(triangles_[t].node[(k + 1) % 3]);
+      sides.push_back({std::min(a, b), std::max(a, b), t, k});
     }
+  std::sort(sides.begin(), sides.end());
   auto smallestHeight = [&](uint32_t triangle) {
     const auto p = positions(triangle);
     const double longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     return longest > 0.0 ? glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) / longest : 0.0;
   };
-  for (const auto& [key, sides] : byEdge) {
-    if (sides.size() != 2) continue;
-    const auto [t0, k0] = sides[0];
-    const auto [t1, k1] = sides[1];
+  for (size_t first = 0, last = 0; first < sides.size(); first = last) {
+    for (last = first + 1; last < sides.size() && sides[last].a == sides[first].a && sides[last].b == sides[first].b;)
+      ++last;
+    if (last - first != 2) continue;
+    const uint32_t t0 = sides[first].triangle, t1 = sides[first + 1].triangle;
+    const int k0 = int(sides[first].edge), k1 = int(sides[first + 1].edge);
     // The far vertex of one is measured from the plane of the other whose normal is the better
     // conditioned, the one with the larger smallest height (a triangle's normal is good to
     // ~eps |x| / that height). Measured from a sliver's plane, as it was when the sliver came
@@ -171,11 +213,12 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh)
     // Edge k0 of A runs a -> b; the same edge of B runs b -> a.
     const bool sameNodes = A.node[k0] == B.node[(k1 + 1) % 3] && A.node[(k0 + 1) % 3] == B.node[k1];
     Continuity order = sameNodes ? Continuity::C1 : Continuity::Cm1;
-    for (const auto& [t, k] : sides) {
-      const int64_t elementEdge = onElementEdge[t][k];
+    for (const Side& side : {sides[first], sides[first + 1]}) {
+      const uint32_t t = side.triangle;
+      const int64_t elementEdge = onElementEdge[t][side.edge];
       if (elementEdge >= 0) {
         const Continuity tagged =
-            topology_.edges()[topology_.edgeIndex(triangles_[t].element, uint32_t(elementEdge))].continuity;
+            topology_->edges()[topology_->edgeIndex(triangles_[t].element, uint32_t(elementEdge))].continuity;
         order = std::min(order, tagged);
       }
     }
@@ -196,16 +239,16 @@ Vec3 SurfaceTriangulation::normal(uint32_t triangle) const {
 }
 
 int SurfaceTriangulation::cornerAt(uint32_t triangle, uint32_t node) const {
-  const uint32_t wanted = topology_.positionId(node);
+  const uint32_t wanted = topology_->positionId(node);
   for (int k = 0; k < 3; ++k)
-    if (topology_.positionId(triangles_[triangle].node[k]) == wanted) return k;
+    if (topology_->positionId(triangles_[triangle].node[k]) == wanted) return k;
   return -1;
 }
 
 SurfaceTriangulation::Location SurfaceTriangulation::locate(uint32_t element, const Vec3& x) const {
   Location best;
   double bestInside = -std::numeric_limits<double>::infinity();
-  for (uint32_t t : byElement_[element]) {
+  for (uint32_t t : trianglesOf(element)) {
     const auto p = positions(t);
     const Vec3 w = barycentricFrame(p)(x);
     const double inside = std::min(w.x, std::min(w.y, w.z));

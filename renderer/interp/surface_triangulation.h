@@ -19,6 +19,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace radview {
@@ -38,11 +39,25 @@ struct SurfaceTriangle {
 class SurfaceTriangulation {
  public:
   explicit SurfaceTriangulation(const RadiosityMesh& mesh);
+  // On the mesh's own topology (MeshTopology(mesh)), built once and shared.
+  SurfaceTriangulation(const RadiosityMesh& mesh, std::shared_ptr<const MeshTopology> topology);
 
   const RadiosityMesh& mesh() const { return mesh_; }
-  const MeshTopology& topology() const { return topology_; }
+  const MeshTopology& topology() const { return *topology_; }
   const std::vector<SurfaceTriangle>& triangles() const { return triangles_; }
-  const std::vector<uint32_t>& trianglesOf(uint32_t element) const { return byElement_[element]; }
+  // The triangles of `element`: consecutive indices, in the order they were cut.
+  struct TriangleRange {
+    struct Index {
+      uint32_t i;
+      uint32_t operator*() const { return i; }
+      Index& operator++() { return ++i, *this; }
+      bool operator!=(Index o) const { return i != o.i; }
+    };
+    uint32_t first, last;
+    Index begin() const { return {first}; }
+    Index end() const { return {last}; }
+  };
+  TriangleRange trianglesOf(uint32_t element) const { return {firstTriangle_[element], firstTriangle_[element + 1]}; }
   std::array<Vec3, 3> positions(uint32_t triangle) const;
   Vec3 normal(uint32_t triangle) const;  // unit
   // Index (0..2) of the corner of `triangle` at the position of node `node`, or -1.
@@ -57,9 +72,9 @@ class SurfaceTriangulation {
 
  private:
   const RadiosityMesh& mesh_;
-  MeshTopology topology_;
+  std::shared_ptr<const MeshTopology> topology_;
   std::vector<SurfaceTriangle> triangles_;
-  std::vector<std::vector<uint32_t>> byElement_;
+  std::vector<uint32_t> firstTriangle_;  // per element, and one past the last: where its triangles start
 };
 
 }  // namespace radview

@@ -3,7 +3,7 @@
 #include "geom/polygon.h"
 
 #include <algorithm>
-#include <set>
+#include <cstdint>
 #include <utility>
 
 namespace radview {
@@ -91,17 +91,17 @@ std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh&
   return triangles;
 }
 
-DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology) {
   DisplayMesh out;
-  std::set<std::pair<uint32_t, uint32_t>> drawnEdges;
-  auto addEdge = [&](uint32_t a, uint32_t b) {
-    if (drawnEdges.insert({std::min(a, b), std::max(a, b)}).second) {
-      out.elementEdges.push_back(toFloat(mesh.nodes[a].position));
-      out.elementEdges.push_back(toFloat(mesh.nodes[b].position));
-    }
+  // Element edges by their nodes, each drawn once, in the direction its first element runs it
+  // (a line's pixels depend on its direction).
+  struct DrawnEdge {
+    uint64_t nodes;
+    uint32_t from, to;
   };
+  std::vector<DrawnEdge> drawnEdges;
+  auto addEdge = [&](uint32_t a, uint32_t b) { drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b}); };
 
-  const MeshTopology topology(mesh);
   const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& element = mesh.elements[e];
@@ -119,6 +119,16 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh) {
         addEdge(c[i], c[(i + 1) % n]);
       }
     }
+  }
+  std::stable_sort(drawnEdges.begin(), drawnEdges.end(),
+                   [](const DrawnEdge& x, const DrawnEdge& y) { return x.nodes < y.nodes; });
+  drawnEdges.erase(std::unique(drawnEdges.begin(), drawnEdges.end(),
+                               [](const DrawnEdge& x, const DrawnEdge& y) { return x.nodes == y.nodes; }),
+                   drawnEdges.end());
+  out.elementEdges.reserve(2 * drawnEdges.size());
+  for (const DrawnEdge& edge : drawnEdges) {
+    out.elementEdges.push_back(toFloat(mesh.nodes[edge.from].position));
+    out.elementEdges.push_back(toFloat(mesh.nodes[edge.to].position));
   }
   for (const DiscontinuityEdge& d : mesh.discontinuities) {
     if (d.order == Continuity::C1) continue;

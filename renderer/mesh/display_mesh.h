@@ -45,7 +45,8 @@ struct DisplayMesh {
 // corner gets no zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
 // Gouraud shading passes through all six nodal values; other quadratic polygons are cut
 // over their corners only (their mid-edge values are shown by the higher-order methods).
-DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh);
+// `topology` is the mesh's own (MeshTopology(mesh)).
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
 
 // A corner of a triangle the GPU draws of an element: at a node's position, with the value the
 // element itself has there (the node's own B, or at a neighbour's T-vertex the element's linear
@@ -55,6 +56,9 @@ struct DrawnCorner {
   Rgb B{0.0};
 };
 
+// MeshTopology's T-vertices, listed by the element whose edge each lies on.
+std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, const MeshTopology& topology);
+
 // elementTriangles with the element's T-vertices (its list from tVerticesByElement) made corners of its outline, so that both sides of a T-junction are drawn through
 // the same vertices, while the element keeps its own interpolation: each triangle along an edge
 // with T-vertices is fanned through them from its opposite corner, and a T-vertex gets the value
@@ -63,8 +67,6 @@ struct DrawnCorner {
 // its sub-pixel grid, can pass a pixel centre between the neighbour's edges through the T-vertex
 // and the element's straight edge: a single background pixel in a wall of the solved Cornell box
 // (C&W §9.2 on T-vertices; tests/gl/extremes_render_test.cpp).
-// MeshTopology's T-vertices, listed by the element whose edge each lies on.
-std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, const MeshTopology& topology);
 
 std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
                                                             const std::vector<TVertex>& tVertices);

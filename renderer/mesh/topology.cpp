@@ -1,6 +1,7 @@
 #include "mesh/topology.h"
 
 #include "core/error.h"
+#include "core/parallel_for.h"
 #include "geom/point_grid.h"
 #include "geom/weld.h"
 
@@ -8,13 +9,11 @@
 #include <cmath>
 #include <string>
 #include <tuple>
-#include <unordered_map>
+#include <utility>
 
 namespace radview {
 
 namespace {
-
-uint64_t edgeKey(uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); }
 
 // Compressed lists: the items of group g are items[start[g] .. start[g+1]).
 struct Lists {
@@ -63,23 +62,46 @@ MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
   positionCount_ = welded.count();
 
   // Edges by their end positions: across a C-1 edge the two sides have their own nodes but
-  // the same positions, so they still meet here.
-  std::unordered_map<uint64_t, uint32_t> edgeOfKey;
-  elementEdges_.resize(mesh.elements.size());
+  // the same positions, so they still meet here. Every element edge is a use (a, b); the uses
+  // are ordered by a, then b, by counting (stable, so each edge's sides stay in element
+  // order), and each run of equal (a, b) is one edge.
+  struct Use {
+    uint32_t a, b, element, edge;
+  };
+  std::vector<Use> uses;
+  elementFirstEdge_.reserve(mesh.elements.size() + 1);
   for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
     const std::vector<uint32_t>& corners = mesh.elements[e].corners;
+    elementFirstEdge_.push_back(uint32_t(uses.size()));
     for (uint32_t i = 0; i < corners.size(); ++i) {
       RADVIEW_CHECK(corners[i] < mesh.nodes.size());
       const uint32_t a = positionId_[corners[i]], b = positionId_[corners[(i + 1) % corners.size()]];
-      auto [it, added] = edgeOfKey.emplace(edgeKey(a, b), uint32_t(edges_.size()));
-      if (added) {
+      uses.push_back({std::min(a, b), std::max(a, b), e, i});
+    }
+  }
+  elementFirstEdge_.push_back(uint32_t(uses.size()));
+  std::vector<uint32_t> aOfUse(uses.size());
+  for (size_t u = 0; u < uses.size(); ++u) aOfUse[u] = uses[u].a;
+  const Lists usesByA = groupBy(aOfUse, positionCount_);
+  aOfUse = {};
+  elementEdges_.resize(uses.size());
+  sides_.reserve(uses.size());
+  std::vector<uint32_t> run;
+  for (uint32_t a = 0; a < positionCount_; ++a) {
+    run.assign(usesByA.items.begin() + usesByA.start[a], usesByA.items.begin() + usesByA.start[a + 1]);
+    std::stable_sort(run.begin(), run.end(), [&](uint32_t x, uint32_t y) { return uses[x].b < uses[y].b; });
+    for (size_t k = 0; k < run.size(); ++k) {
+      const Use& use = uses[run[k]];
+      if (k == 0 || uses[run[k - 1]].b != use.b) {
         MeshEdge edge;
-        edge.a = std::min(a, b);
-        edge.b = std::max(a, b);
+        edge.a = use.a;
+        edge.b = use.b;
+        edge.firstSide = uint32_t(sides_.size());
         edges_.push_back(edge);
       }
-      edges_[it->second].sides.push_back({e, i});
-      elementEdges_[e].push_back(it->second);
+      ++edges_.back().sideCount;
+      sides_.push_back({use.element, use.edge});
+      elementEdges_[elementFirstEdge_[use.element] + use.edge] = uint32_t(edges_.size() - 1);
     }
   }
 
@@ -90,10 +112,13 @@ MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
                              "-" + std::to_string(tag.b) + ")";
     if (tag.a >= mesh.nodes.size() || tag.b >= mesh.nodes.size())
       throw Error(name + " refers to a node out of range");
-    auto it = edgeOfKey.find(edgeKey(positionId_[tag.a], positionId_[tag.b]));
-    if (it == edgeOfKey.end()) throw Error(name + " is not an element edge");
-    MeshEdge& edge = edges_[it->second];
-    edge.continuity = std::min(edge.continuity, tag.order);
+    const uint32_t a = std::min(positionId_[tag.a], positionId_[tag.b]), b = std::max(positionId_[tag.a], positionId_[tag.b]);
+    auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(a, b),
+                               [](const MeshEdge& e, const std::pair<uint32_t, uint32_t>& key) {
+                                 return std::make_pair(e.a, e.b) < key;
+                               });
+    if (it == edges_.end() || it->a != a || it->b != b) throw Error(name + " is not an element edge");
+    it->continuity = std::min(it->continuity, tag.order);
   }
 
   findTVertices(mesh, welded.position, weldDistance);
@@ -134,48 +159,53 @@ void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Ve
   PointGrid grid(mesh.bounds().lo, cellSize, positions.size());
   for (uint32_t p = 0; p < positions.size(); ++p) grid.insert(p, positions[p]);
 
-  std::vector<uint32_t> visitedBy(positionCount_, UINT32_MAX);
-  for (uint32_t index = 0; index < edges_.size(); ++index) {
-    const MeshEdge& edge = edges_[index];
-    const Vec3 A = positions[edge.a], B = positions[edge.b];
-    const double L = glm::distance(A, B);
-    if (L == 0.0) continue;
-    // "On the edge": within a relative 1e-5 of its length (or the weld distance) of its line.
-    const double tolerance = 1e-5 * L + weldDistance;
-    // Sample the edge every cellSize or less; boxes of half-width step/2 + tolerance about the
-    // samples cover every point within `tolerance` of it.
-    const int steps = int(std::ceil(L / cellSize));  // cellSize >= 1e-6 diagonal: at most 1e6
-    const Vec3 reach(0.5 * L / steps + tolerance);
-    for (int k = 0; k <= steps; ++k) {
-      const Vec3 sample = A + (double(k) / steps) * (B - A);
-      grid.forEachNear(sample - reach, sample + reach, [&](uint32_t p) {
-        if (visitedBy[p] == index || p == edge.a || p == edge.b) return;
-        visitedBy[p] = index;
+  // Edges in blocks, each block's T-vertices its own list: the blocks run on every core.
+  constexpr size_t kBlock = 4096;
+  std::vector<std::vector<TVertex>> found((edges_.size() + kBlock - 1) / kBlock);
+  parallelFor(found.size(), [&](size_t block) {
+    std::vector<uint32_t> near;
+    for (size_t index = block * kBlock; index < std::min(edges_.size(), (block + 1) * kBlock); ++index) {
+      const MeshEdge& edge = edges_[index];
+      const Vec3 A = positions[edge.a], B = positions[edge.b];
+      const double L = glm::distance(A, B);
+      if (L == 0.0) continue;
+      // "On the edge": within a relative 1e-5 of its length (or the weld distance) of its line.
+      const double tolerance = 1e-5 * L + weldDistance;
+      // The edge in pieces no longer than a cell; the boxes about them, grown by twice the
+      // tolerance, hold every point within `tolerance` of the edge, and each meets a few cells.
+      const int steps = int(std::ceil(L / cellSize));  // cellSize >= 1e-6 diagonal: at most 1e6
+      near.clear();
+      for (int k = 0; k < steps; ++k) {
+        const Vec3 p0 = A + (double(k) / steps) * (B - A), p1 = A + (double(k + 1) / steps) * (B - A);
+        grid.forEachNear(glm::min(p0, p1) - Vec3(2.0 * tolerance), glm::max(p0, p1) + Vec3(2.0 * tolerance),
+                         [&](uint32_t p) { near.push_back(p); });
+      }
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      for (uint32_t p : near) {
+        if (p == edge.a || p == edge.b) continue;
         const double t = glm::dot(positions[p] - A, B - A) / (L * L);
-        if (t * L <= tolerance || (1.0 - t) * L <= tolerance) return;
-        if (glm::distance(positions[p], A + t * (B - A)) > tolerance) return;
+        if (t * L <= tolerance || (1.0 - t) * L <= tolerance) continue;
+        if (glm::distance(positions[p], A + t * (B - A)) > tolerance) continue;
         nodesAtPosition.forEach(p, [&](uint32_t node) {
-          for (const EdgeSide& side : edge.sides) {
+          for (const EdgeSide& side : sides(edge)) {
             if (hasPosition(side.element, p) || !coplanarWithNode(side.element, node)) continue;
             // t runs from edge.a; the side's edge may run the other way.
             const bool forward = positionId_[mesh.elements[side.element].corners[side.edge]] == edge.a;
-            tVertices_.push_back({node, side.element, side.edge, forward ? t : 1.0 - t});
+            found[block].push_back({node, side.element, side.edge, forward ? t : 1.0 - t});
           }
         });
-      });
+      }
     }
-  }
+  }, 1);
+  for (const std::vector<TVertex>& list : found) tVertices_.insert(tVertices_.end(), list.begin(), list.end());
   std::sort(tVertices_.begin(), tVertices_.end(), [](const TVertex& x, const TVertex& y) {
     return std::tie(x.element, x.edge, x.t, x.node) < std::tie(y.element, y.edge, y.t, y.node);
   });
 }
 
-uint32_t MeshTopology::edgeIndex(uint32_t element, uint32_t edge) const {
-  return elementEdges_[element][edge];
-}
-
 int64_t MeshTopology::neighbour(uint32_t element, uint32_t edge) const {
-  const std::vector<EdgeSide>& sides = edges_[edgeIndex(element, edge)].sides;
+  const EdgeSides sides = this->sides(edges_[edgeIndex(element, edge)]);
   if (sides.size() != 2) return -1;
   const bool first = sides[0].element == element && sides[0].edge == edge;
   return sides[first ? 1 : 0].element;

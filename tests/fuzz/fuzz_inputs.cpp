@@ -64,7 +64,7 @@ Vec3 cornerMean(const RadiosityMesh& mesh, size_t element) {
 
 void exerciseMesh(const RadiosityMesh& mesh) {
   const MeshTopology topology(mesh);
-  const DisplayMesh display = buildDisplayMesh(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh, topology);
   const RadiosityMesh repaired = repairTVertices(mesh);
   for (size_t m = 0; m < methodNames().size(); ++m) {
     const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, Method(m));

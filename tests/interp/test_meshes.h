@@ -365,10 +365,10 @@ inline std::vector<InteriorEdge> interiorEdges(const RadiosityMesh& mesh) {
   const MeshTopology topology(mesh);
   std::vector<InteriorEdge> out;
   for (const MeshEdge& edge : topology.edges()) {
-    if (edge.sides.size() != 2) continue;
-    const Element& e = mesh.elements[edge.sides[0].element];
-    const uint32_t k = edge.sides[0].edge;
-    out.push_back({edge.sides[0].element, edge.sides[1].element, mesh.nodes[e.corners[k]].position,
+    if (topology.sides(edge).size() != 2) continue;
+    const Element& e = mesh.elements[topology.sides(edge)[0].element];
+    const uint32_t k = topology.sides(edge)[0].edge;
+    out.push_back({topology.sides(edge)[0].element, topology.sides(edge)[1].element, mesh.nodes[e.corners[k]].position,
                    mesh.nodes[e.corners[(k + 1) % e.corners.size()]].position, edge.continuity});
   }
   return out;

@@ -19,7 +19,7 @@ RadiosityMesh withNodes(const std::vector<Vec3>& positions) {
 TEST(DisplayMesh, TwoQuadsSharingAnEdgeDrawItOnce) {
   RadiosityMesh mesh = withNodes({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}});
   mesh.elements = {Element{{0, 1, 4, 3}, {}, 0, 0}, Element{{1, 2, 5, 4}, {}, 0, 0}};
-  const DisplayMesh display = buildDisplayMesh(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh, MeshTopology(mesh));
   EXPECT_EQ(display.triangles.size(), 12u);    // 2 triangles per quad
   EXPECT_EQ(display.elementEdges.size(), 14u);  // 7 distinct edges, 2 points each
 }
@@ -27,7 +27,7 @@ TEST(DisplayMesh, TwoQuadsSharingAnEdgeDrawItOnce) {
 TEST(DisplayMesh, QuadraticTriangleIsCutAtItsMidEdgeNodes) {
   RadiosityMesh mesh = withNodes({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
   mesh.elements = {Element{{0, 1, 2}, {3, 4, 5}, 0, 0}};
-  const DisplayMesh display = buildDisplayMesh(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh, MeshTopology(mesh));
   ASSERT_EQ(display.triangles.size(), 12u);
   double total = 0.0;
   for (size_t i = 0; i < display.triangles.size(); i += 3) {
@@ -46,7 +46,7 @@ TEST(DisplayMesh, ConcaveElementIsCoveredExactly) {
   // An L-shaped element of area 3.
   RadiosityMesh mesh = withNodes({{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}});
   mesh.elements = {Element{{0, 1, 2, 3, 4, 5}, {}, 0, 0}};
-  const DisplayMesh display = buildDisplayMesh(mesh);
+  const DisplayMesh display = buildDisplayMesh(mesh, MeshTopology(mesh));
   double total = 0.0;
   for (size_t i = 0; i < display.triangles.size(); i += 3) {
     const glm::vec3 n = glm::cross(display.triangles[i + 1].position - display.triangles[i].position,

@@ -112,7 +112,7 @@ TEST(TopologyTest, DuplicatedNodesAcrossACm1EdgeAreStillNeighbours) {
   EXPECT_EQ(topology.neighbour(0, 1), 1);
   EXPECT_EQ(topology.neighbour(1, 3), 0);
   EXPECT_EQ(topology.edgeIndex(0, 1), topology.edgeIndex(1, 3));
-  EXPECT_EQ(topology.edges()[topology.edgeIndex(0, 1)].sides.size(), 2u);
+  EXPECT_EQ(topology.sides(topology.edges()[topology.edgeIndex(0, 1)]).size(), 2u);
   // Tagged C-1 and C0: the weaker wins.
   EXPECT_EQ(topology.edges()[topology.edgeIndex(0, 1)].continuity, Continuity::Cm1);
   EXPECT_EQ(topology.countEdges(Continuity::Cm1), 1u);
@@ -120,6 +120,31 @@ TEST(TopologyTest, DuplicatedNodesAcrossACm1EdgeAreStillNeighbours) {
   EXPECT_EQ(topology.countEdges(Continuity::C1), 6u);
   EXPECT_TRUE(topology.tVertices().empty());
   for (uint32_t edge : {0u, 2u, 3u}) EXPECT_EQ(topology.neighbour(0, edge), -1);
+}
+
+// Every element edge is listed once among its edge's sides, and the edges come ordered by
+// their position ids, as the header says.
+TEST(TopologyTest, EdgesAreOrderedAndEachElementEdgeIsOneOfItsSides) {
+  MeshBuilder b;
+  b.column(0, 1, {0, 0.5, 1});
+  b.column(1, 2, {0, 1.0 / 3, 2.0 / 3, 1});
+  b.column(2, 3, {0, 1});
+  const MeshTopology topology(b.mesh);
+  for (size_t i = 1; i < topology.edges().size(); ++i) {
+    const MeshEdge &p = topology.edges()[i - 1], &q = topology.edges()[i];
+    EXPECT_TRUE(p.a < q.a || (p.a == q.a && p.b < q.b)) << "edges " << i - 1 << " and " << i;
+  }
+  size_t sides = 0;
+  for (const MeshEdge& edge : topology.edges()) sides += topology.sides(edge).size();
+  size_t corners = 0;
+  for (uint32_t e = 0; e < b.mesh.elements.size(); ++e)
+    for (uint32_t i = 0; i < b.mesh.elements[e].corners.size(); ++i, ++corners) {
+      const MeshEdge& edge = topology.edges()[topology.edgeIndex(e, i)];
+      int found = 0;
+      for (const EdgeSide& side : topology.sides(edge)) found += side.element == e && side.edge == i;
+      EXPECT_EQ(found, 1) << "element " << e << " edge " << i;
+    }
+  EXPECT_EQ(sides, corners);
 }
 
 TEST(TopologyTest, DiscontinuityThatIsNoElementEdgeThrows) {
@@ -152,7 +177,7 @@ TEST(TopologyTest, NonManifoldEdgeHasNoNeighbour) {
   b.element({q, p, b.node({0.5, -1, 0})});
   b.element({q, p, b.node({0.5, 0, 1})});
   const MeshTopology topology(b.mesh);
-  EXPECT_EQ(topology.edges()[topology.edgeIndex(0, 0)].sides.size(), 3u);
+  EXPECT_EQ(topology.sides(topology.edges()[topology.edgeIndex(0, 0)]).size(), 3u);
   EXPECT_EQ(topology.neighbour(0, 0), -1);
 }
 

@@ -83,7 +83,7 @@ TEST(UniformMesherTest, ConcavePolygonIsTriangulatedIntoAConformingMesh) {
   EXPECT_TRUE(topology.tVertices().empty());
   EXPECT_EQ(topology.positionCount(), mesh.nodes.size());  // nodes welded within the polygon
   // Boundary edges (one side) make up exactly the perimeter; all others have two sides.
-  for (const MeshEdge& edge : topology.edges()) ASSERT_LE(edge.sides.size(), 2u);
+  for (const MeshEdge& edge : topology.edges()) ASSERT_LE(topology.sides(edge).size(), 2u);
   double boundary = 0.0;
   for (uint32_t e = 0; e < mesh.elements.size(); ++e)
     for (uint32_t i = 0; i < mesh.elements[e].corners.size(); ++i)

@@ -111,7 +111,7 @@ TEST(AdaptiveSubdivisionTest, DiscontinuityEdgesSurviveSplits) {
   EXPECT_EQ(topology.countEdges(Continuity::Cm1), 2u);  // the two halves, each with two sides
   for (const MeshEdge& edge : topology.edges()) {
     if (edge.continuity != Continuity::Cm1) continue;
-    EXPECT_EQ(edge.sides.size(), 2u);
+    EXPECT_EQ(topology.sides(edge).size(), 2u);
   }
   // The sides keep their own nodes: the halves' middles are two nodes at one position.
   std::set<uint32_t> middles;
@@ -190,8 +190,8 @@ TEST(AdaptiveSubdivisionTest, QuadraticElementsShareTheirMidEdgeNodes) {
   size_t interior = 0;
   for (const MeshEdge& edge : topology.edges()) {
     // Polygons meeting at a corner of the box share edge positions, not nodes.
-    if (edge.sides.size() != 2) continue;
-    const EdgeSide s = edge.sides[0], t = edge.sides[1];
+    if (topology.sides(edge).size() != 2) continue;
+    const EdgeSide s = topology.sides(edge)[0], t = topology.sides(edge)[1];
     if (mesh.elements[s.element].surface != mesh.elements[t.element].surface) continue;
     ++interior;
     EXPECT_EQ(mesh.elements[s.element].midEdge[s.edge], mesh.elements[t.element].midEdge[t.edge]);
