@@ -167,29 +167,14 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   tVertexMarkers_ = static_cast<GLsizei>(display.tVertices.size());
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
-  // Element polygons (corners) for the scanline, bilinear and serendipity passes, std430: per
-  // corner vec4 position, vec4 B, vec4 B of the mid-edge node after it (serendipity quads
-  // only); offsets[e] .. offsets[e+1] are element e's.
-  std::vector<glm::vec4> corners;
-  std::vector<uint32_t> offsets{0};
   std::vector<DisplayVertex> serendipity;
-  for (size_t e = 0; e < mesh.elements.size(); ++e) {
-    const Element& element = mesh.elements[e];
-    const bool quad = isSerendipityQuad(mesh, e);
-    for (size_t k = 0; k < element.corners.size(); ++k) {
-      const Node& node = mesh.nodes[element.corners[k]];
-      corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
-      corners.push_back(glm::vec4(glm::vec3(node.B), 1.0f));
-      corners.push_back(quad ? glm::vec4(glm::vec3(mesh.nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
-    }
-    offsets.push_back(uint32_t(corners.size() / 3));
-  }
   for (const DisplayVertex& v : display.triangles)
     if (isSerendipityQuad(mesh, v.element)) serendipity.push_back(v);
   glNamedBufferData(serendipityVbo_, serendipity.size() * sizeof(DisplayVertex), serendipity.data(), GL_STATIC_DRAW);
   serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
-  glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
-  glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
+  glNamedBufferData(polygonCorners_, 0, nullptr, GL_STATIC_DRAW);  // uploaded when first drawn
+  glNamedBufferData(polygonOffsets_, 0, nullptr, GL_STATIC_DRAW);
+  polygonsUploaded_ = false;
   mesh_ = std::move(mesh);
   topology_ = std::move(topology);
   brightestLuminance_ = 0.0;
@@ -303,8 +288,32 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
+void MeshRenderer::uploadPolygons() {
+  // Element polygons (corners) for the scanline, bilinear and serendipity passes, std430: per
+  // corner vec4 position, vec4 B, vec4 B of the mid-edge node after it (serendipity quads
+  // only); offsets[e] .. offsets[e+1] are element e's.
+  std::vector<glm::vec4> corners;
+  std::vector<uint32_t> offsets{0};
+  offsets.reserve(mesh_.elements.size() + 1);
+  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Element& element = mesh_.elements[e];
+    const bool quad = isSerendipityQuad(mesh_, e);
+    for (size_t k = 0; k < element.corners.size(); ++k) {
+      const Node& node = mesh_.nodes[element.corners[k]];
+      corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
+      corners.push_back(glm::vec4(glm::vec3(node.B), 1.0f));
+      corners.push_back(quad ? glm::vec4(glm::vec3(mesh_.nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
+    }
+    offsets.push_back(uint32_t(corners.size() / 3));
+  }
+  glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
+  glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
+  polygonsUploaded_ = true;
+}
+
 void MeshRenderer::drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
                                 int height) {
+  if (!polygonsUploaded_) uploadPolygons();
   const ShaderProgram& program = polygonPrograms_[mode];
   program.set("clipFromWorld", clipFromWorld);
   program.set("viewportSize", glm::vec2(width, height));

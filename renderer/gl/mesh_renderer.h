@@ -138,6 +138,8 @@ class MeshRenderer {
   GLuint overlayVao_ = 0, overlayVbo_ = 0;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
   GLuint polygonCorners_ = 0, polygonOffsets_ = 0;  // storage buffers: element polygons
+  bool polygonsUploaded_ = false;                   // only the methods that draw polygons need them
+  void uploadPolygons();
   // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
   GLuint serendipityVao_ = 0, serendipityVbo_ = 0;
   GLsizei serendipityVertices_ = 0;
