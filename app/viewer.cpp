@@ -1,4 +1,5 @@
 #include "app/background_open.h"
+#include "app/background_pieces.h"
 #include "app/background_solve.h"
 #include "app/commands.h"
 #include "app/viewer_gather.h"
@@ -216,6 +217,9 @@ int runViewer(const ViewerOptions& options) {
 
   BackgroundSolve solve;
   BackgroundOpen opener;
+  BackgroundPieces pieces;
+  // Interactive only: a run of --frames draws every frame with the method asked for.
+  const bool piecesInBackground = options.frames == 0;
   ViewerGather gather;
   uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
   state.solveRequested = options.solve && !state.viewed.file.isSolution;
@@ -317,7 +321,9 @@ int runViewer(const ViewerOptions& options) {
         fitClipPlanes(state.camera, state.viewed.mesh.bounds());
         gather.update(state.gather, state.viewed.mesh, meshVersion, state.camera, fbWidth, fbHeight, renderer,
                       lastFrame && options.framesWaitForSpp);
-        renderer.render(state.camera, state.settings, fbWidth, fbHeight);
+        const gl::RenderSettings drawn =
+            piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
+        renderer.render(state.camera, drawn, fbWidth, fbHeight);
         renderer.presentToDefaultFramebuffer(fbWidth, fbHeight);
       } catch (const std::exception& e) {
         state.status = e.what();

@@ -175,13 +175,13 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   glNamedBufferData(polygonCorners_, 0, nullptr, GL_STATIC_DRAW);  // uploaded when first drawn
   glNamedBufferData(polygonOffsets_, 0, nullptr, GL_STATIC_DRAW);
   polygonsUploaded_ = false;
-  mesh_ = std::move(mesh);
+  mesh_ = std::make_shared<const RadiosityMesh>(std::move(mesh));
   topology_ = std::move(topology);
   brightestLuminance_ = 0.0;
-  for (const Element& e : mesh_.elements)
-    if (!mesh_.materials[e.material].isEmitter())
+  for (const Element& e : mesh_->elements)
+    if (!mesh_->materials[e.material].isEmitter())
       for (uint32_t n : e.corners)
-        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh_.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
+        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh_->nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
   if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
   repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
@@ -202,25 +202,49 @@ bool MeshRenderer::isDeferred(ShadingMethod method, const BezierEvaluation& eval
 void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) {
   const int wanted = piecesKey(settings.method, settings.cloughTocher);
   if ((deferred ? deferredFor_ : patchesFor_) == wanted && (!settings.splitLines || splitFor_ == wanted)) return;
-  std::vector<glm::vec3> split;
-  std::vector<glm::vec3>* splitWanted = settings.splitLines ? &split : nullptr;
+  if (deferred) {
+    adoptPieces(prepareDeferred(mesh_, topology_, settings.method, settings.cloughTocher), settings.splitLines);
+    return;
+  }
   // One of the two passes holds the method's pieces at a time, the other's freed first: memory
   // stays what the view needs.
-  if (deferred) {
-    bezierPass_.upload({}, 3);
-    patchesFor_ = -1;
-    uploadDeferred(mesh_, topology_, settings.method, settings.cloughTocher, deferred_, splitWanted);
-    deferredFor_ = wanted;
-  } else {
-    deferred_.clear();
-    deferredFor_ = -1;
-    bezierPass_.upload(pieceVertices(mesh_, topology_, settings.method, settings.cloughTocher, splitWanted),
-                       degreeOf(settings.method));
-    patchesFor_ = wanted;
-  }
+  deferred_.clear();
+  deferredFor_ = -1;
+  std::vector<glm::vec3> split;
+  bezierPass_.upload(pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
+                                   settings.splitLines ? &split : nullptr),
+                     degreeOf(settings.method));
+  patchesFor_ = wanted;
+  uploadSplit(split, settings.splitLines ? wanted : -1);
+}
+
+std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& settings) const {
+  const bool flatSurface = settings.surfaceHeight == 0.0 || settings.view == DisplayView::Difference;
+  const int key = piecesKey(settings.method, settings.cloughTocher);
+  const bool built = deferredFor_ == key && (!settings.splitLines || splitFor_ == key);
+  if (built || hasShownImage() || settings.repairTVertices != repairedDrawn_ || settings.tessellation != 0 ||
+      !flatSurface || (settings.method != ShadingMethod::C1Quadratic && settings.method != ShadingMethod::CloughTocher))
+    return {};
+  return [mesh = mesh_, topology = topology_, method = settings.method, variant = settings.cloughTocher] {
+    return prepareDeferred(mesh, topology, method, variant);
+  };
+}
+
+void MeshRenderer::adoptPieces(const DeferredSetup& setup, bool splitLines) {
+  if (setup.mesh != mesh_) return;
+  bezierPass_.upload({}, 3);
+  patchesFor_ = -1;
+  std::vector<glm::vec3> split;
+  uploadDeferred(setup, deferred_, splitLines ? &split : nullptr);
+  const int key = piecesKey(setup.method, setup.variant);
+  deferredFor_ = key;
+  uploadSplit(split, splitLines ? key : -1);
+}
+
+void MeshRenderer::uploadSplit(const std::vector<glm::vec3>& split, int key) {
   glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
   splitVertices_ = static_cast<GLsizei>(split.size());
-  splitFor_ = settings.splitLines ? wanted : -1;
+  splitFor_ = key;
 }
 
 void MeshRenderer::uploadControlNet(double heightScale) {
@@ -237,7 +261,7 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
   evaluation.tolerance = settings.tessellationTolerance;
   evaluation.exposureScale = std::exp2(settings.exposure);
   if (settings.surfaceHeight > 0.0) {
-    evaluation.surfaceHeight = settings.surfaceHeight * mesh_.bounds().diagonal() / brightestLuminance_;
+    evaluation.surfaceHeight = settings.surfaceHeight * mesh_->bounds().diagonal() / brightestLuminance_;
     evaluation.eye = glm::vec3(camera.eye - origin_);
     if (evaluation.tessellation == 0) evaluation.tessellation = kAdaptiveTessellation;
   }
@@ -294,15 +318,15 @@ void MeshRenderer::uploadPolygons() {
   // only); offsets[e] .. offsets[e+1] are element e's.
   std::vector<glm::vec4> corners;
   std::vector<uint32_t> offsets{0};
-  offsets.reserve(mesh_.elements.size() + 1);
-  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
-    const Element& element = mesh_.elements[e];
-    const bool quad = isSerendipityQuad(mesh_, e);
+  offsets.reserve(mesh_->elements.size() + 1);
+  for (size_t e = 0; e < mesh_->elements.size(); ++e) {
+    const Element& element = mesh_->elements[e];
+    const bool quad = isSerendipityQuad(*mesh_, e);
     for (size_t k = 0; k < element.corners.size(); ++k) {
-      const Node& node = mesh_.nodes[element.corners[k]];
+      const Node& node = mesh_->nodes[element.corners[k]];
       corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
       corners.push_back(glm::vec4(glm::vec3(node.B), 1.0f));
-      corners.push_back(quad ? glm::vec4(glm::vec3(mesh_.nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
+      corners.push_back(quad ? glm::vec4(glm::vec3(mesh_->nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
     }
     offsets.push_back(uint32_t(corners.size() / 3));
   }
@@ -343,7 +367,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
   if (settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic) {
-    const double lift = settings.surfaceHeight * mesh_.bounds().diagonal();
+    const double lift = settings.surfaceHeight * mesh_->bounds().diagonal();
     camera.zFar += lift;
     camera.zNear = std::max(camera.zNear - lift, camera.zFar * 1e-4);
   }
@@ -362,10 +386,11 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
       (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     if (comparisonDeferred) {
-      uploadDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, comparisonDeferred_, nullptr);
+      uploadDeferred(prepareDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher),
+                     comparisonDeferred_, nullptr);
       comparisonDeferredFor_ = comparisonKey;
     } else {
-      comparisonPass_.upload(pieceVertices(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
+      comparisonPass_.upload(pieceVertices(*mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
                              degreeOf(settings.comparisonMethod));
       comparisonPatchesFor_ = comparisonKey;
     }

@@ -17,6 +17,7 @@
 #include <epoxy/gl.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,6 +85,8 @@ struct RenderSettings {
   glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
+struct DeferredSetup;  // gl/method_pieces.h
+
 class MeshRenderer {
  public:
   MeshRenderer();
@@ -93,6 +96,14 @@ class MeshRenderer {
 
   void setMesh(const RadiosityMesh& mesh);
   void render(const Camera& camera, const RenderSettings& settings, int width, int height);
+
+  // The C1 methods per pixel, set up beside a frame loop (the viewer's): where render() would
+  // now have to build `settings`' pieces, the part of that which needs no OpenGL (seconds at
+  // 10^6 elements), as a job that may run on any thread; else an empty function. adoptPieces
+  // then uploads the result on this renderer's thread, and render() draws it without building;
+  // a set-up for a mesh no longer drawn is dropped.
+  std::function<DeferredSetup()> piecesSetup(const RenderSettings& settings) const;
+  void adoptPieces(const DeferredSetup& setup, bool splitLines);
 
   // The image a difference view compares with: a linear file or display colour, any size (the
   // view samples it at its own resolution; displayDifference needs equal sizes).
@@ -152,6 +163,7 @@ class MeshRenderer {
   // the method or the Clough-Tocher variant changes): for the deferred pass when `deferred`
   // (the C1 methods per pixel), else for the Bezier pass, releasing the other's.
   void uploadPatches(const RenderSettings& settings, bool deferred);
+  void uploadSplit(const std::vector<glm::vec3>& split, int key);  // the split lines of the pieces `key`, or none
   // Whether `method` is drawn by the deferred pass with this evaluation: the C1 methods per
   // pixel, on the flat surface.
   static bool isDeferred(ShadingMethod method, const BezierEvaluation& evaluation);
@@ -173,7 +185,7 @@ class MeshRenderer {
   bool comparedWithImage_ = false;  // what the last difference view used
   void uploadMesh(bool repairTVertices);
   RadiosityMesh original_;      // as set
-  RadiosityMesh mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
+  std::shared_ptr<const RadiosityMesh> mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
   std::shared_ptr<const MeshTopology> topology_;  // mesh_'s, built once for the display mesh and every method's pieces
   Vec3 origin_{0.0};    // the world point at the origin of the coordinates the GPU sees
   double brightestLuminance_ = 1.0;  // of the non-emitting elements' nodes, for the surface view

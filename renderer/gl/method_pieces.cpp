@@ -40,18 +40,27 @@ void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t spli
 
 }  // namespace
 
-void uploadDeferred(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology, ShadingMethod method,
-                    CloughTocherVariant variant, DeferredPass& pass, std::vector<glm::vec3>* split) {
-  const SurfaceTriangulation surface(mesh, topology);
-  const CornerGradients gradients = vertexGradients(surface, true);
+DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
+                              ShadingMethod method, CloughTocherVariant variant) {
+  DeferredSetup setup;
+  setup.mesh = std::move(mesh);
+  setup.method = method;
+  setup.variant = variant;
+  setup.surface = std::make_unique<const SurfaceTriangulation>(*setup.mesh, std::move(topology));
+  setup.gradients = vertexGradients(*setup.surface, true);
+  if (method == ShadingMethod::C1Quadratic) setup.incenters = triangleIncenters(*setup.surface);
+  return setup;
+}
+
+void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<glm::vec3>* split) {
+  const SurfaceTriangulation& surface = *setup.surface;
   const size_t triangles = surface.triangles().size();
-  if (method == ShadingMethod::CloughTocher) {
+  if (setup.method == ShadingMethod::CloughTocher) {
     streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
-                  [&](uint32_t t) { return cloughTocherPatch(surface, gradients, variant, t); }, split);
+                  [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
   } else {
-    const std::vector<Vec3> incenters = triangleIncenters(surface);
     streamPatches(pass, triangles, 2, kPowellSabinSplitPoints,
-                  [&](uint32_t t) { return powellSabinPatch(surface, gradients, incenters, t); }, split);
+                  [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, setup.incenters, t); }, split);
   }
 }
 
