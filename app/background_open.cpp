@@ -1,6 +1,7 @@
 #include "app/background_open.h"
 
 #include <cstdio>
+#include <memory>
 #include <exception>
 
 namespace radview {
@@ -32,6 +33,7 @@ void BackgroundOpen::launch(const std::string& path) {
     result.path = path;
     try {
       result.viewed = openForViewing(path, elementSize);
+      result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false);
     } catch (const std::exception& e) {
       result.error = e.what();
     }

@@ -1,9 +1,11 @@
 #pragma once
 // Opening a file beside the viewer's frame loop: a worker reads it and, for a scene, meshes and
-// lights it (openForViewing), while the window keeps drawing the file it shows and the panel
-// says how long the opening has taken; the frame loop then uploads the result. At 10^6
-// elements reading and meshing take seconds, during which the window would otherwise freeze.
+// lights it (openForViewing), then prepares it for drawing (gl::prepareMesh), while the window
+// keeps drawing the file it shows and the panel says how long the opening has taken; the frame
+// loop then only uploads the result. At 10^6 elements reading, meshing and preparing take
+// seconds, during which the window would otherwise freeze.
 #include "app/viewed_file.h"
+#include "gl/prepared_mesh.h"
 
 #include <chrono>
 #include <mutex>
@@ -27,7 +29,8 @@ class BackgroundOpen {
 
   struct Result {
     std::string path;
-    std::optional<ViewedFile> viewed;  // or, when it failed:
+    std::optional<ViewedFile> viewed;  // and prepared, its mesh for MeshRenderer::adoptMesh; or, when it failed:
+    std::optional<gl::PreparedMesh> prepared;
     std::string error;
   };
   // A finished opening, handed out once; nothing while one is under way.

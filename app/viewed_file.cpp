@@ -15,7 +15,8 @@ ViewedFile openForViewing(const std::string& path, double elementSize) {
   // so every error the user sees says which file it is about.
   try {
     if (viewed.file.isSolution) {
-      viewed.mesh = viewed.file.mesh;
+      viewed.mesh = std::move(viewed.file.mesh);  // one copy, not two
+      viewed.file.mesh = {};
     } else {
       viewed.elementSize = elementSize > 0.0 ? elementSize : defaultElementSize(viewed.file.scene);
       viewed.mesh = meshAndLight(viewed.file.scene, viewed.elementSize);

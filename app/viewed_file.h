@@ -9,7 +9,7 @@
 namespace radview {
 
 struct ViewedFile {
-  LoadedFile file;
+  LoadedFile file;           // its mesh moved into `mesh`
   RadiosityMesh mesh;        // what is drawn
   double elementSize = 0.0;  // for scenes: the uniform mesh's element size; 0 for solutions
   size_t tVertexCount = 0;

@@ -8,7 +8,6 @@
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
 #include "mesh/solution_file.h"
-#include "mesh/topology.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -267,7 +266,7 @@ int runViewer(const ViewerOptions& options) {
       try {
         if (!opened->viewed) throw Error(opened->error);
         solve.abandon();  // its partial solutions belong to the old scene
-        renderer.setMesh(opened->viewed->mesh);
+        renderer.adoptMesh(std::move(*opened->prepared));
         ++meshVersion;
         adoptViewedFile(state, std::move(*opened->viewed));
       } catch (const std::exception& e) {
@@ -286,7 +285,7 @@ int runViewer(const ViewerOptions& options) {
       try {
         renderer.setMesh(*solved);
         ++meshVersion;
-        state.viewed.tVertexCount = MeshTopology(*solved).tVertices().size();
+        state.viewed.tVertexCount = renderer.tVertexCount();
         state.viewed.mesh = std::move(*solved);
       } catch (const std::exception& e) {
         state.status = e.what();

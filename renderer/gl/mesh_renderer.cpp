@@ -4,7 +4,6 @@
 #include "core/strings.h"
 #include "gl/method_pieces.h"
 #include "gl/patch_vertices.h"
-#include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -141,20 +140,11 @@ MeshRenderer::~MeshRenderer() {
 }
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
-  original_ = mesh;
-  uploadMesh(false);
+  adoptMesh(prepareMesh(std::make_shared<const RadiosityMesh>(mesh), false));
 }
 
-void MeshRenderer::uploadMesh(bool repairTVertices) {
-  RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(original_) : original_;
-  // The GPU draws in float32, which resolves only 0.0078 at 1e5 from the origin: a scene there
-  // 1e-3 across collapsed to a few points (tests/gl/extremes_render_test.cpp). Its coordinates
-  // are taken relative to the mesh's centre, in double, before anything becomes float, and
-  // render() moves the camera's matrix by the same (camera-relative rendering, in effect).
-  origin_ = mesh.bounds().center();
-  for (Node& node : mesh.nodes) node.position -= origin_;
-  auto topology = std::make_shared<const MeshTopology>(mesh);
-  const DisplayMesh display = buildDisplayMesh(mesh, *topology);
+void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
+  const DisplayMesh& display = prepared.display;
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
                     GL_STATIC_DRAW);
@@ -169,22 +159,19 @@ void MeshRenderer::uploadMesh(bool repairTVertices) {
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
   std::vector<DisplayVertex> serendipity;
   for (const DisplayVertex& v : display.triangles)
-    if (isSerendipityQuad(mesh, v.element)) serendipity.push_back(v);
+    if (isSerendipityQuad(*prepared.drawn, v.element)) serendipity.push_back(v);
   glNamedBufferData(serendipityVbo_, serendipity.size() * sizeof(DisplayVertex), serendipity.data(), GL_STATIC_DRAW);
   serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
   glNamedBufferData(polygonCorners_, 0, nullptr, GL_STATIC_DRAW);  // uploaded when first drawn
   glNamedBufferData(polygonOffsets_, 0, nullptr, GL_STATIC_DRAW);
   polygonsUploaded_ = false;
-  mesh_ = std::make_shared<const RadiosityMesh>(std::move(mesh));
-  topology_ = std::move(topology);
-  brightestLuminance_ = 0.0;
-  for (const Element& e : mesh_->elements)
-    if (!mesh_->materials[e.material].isEmitter())
-      for (uint32_t n : e.corners)
-        brightestLuminance_ = std::max(brightestLuminance_, glm::dot(mesh_->nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
-  if (!(brightestLuminance_ > 0.0)) brightestLuminance_ = 1.0;
+  original_ = std::move(prepared.original);
+  mesh_ = std::move(prepared.drawn);
+  topology_ = std::move(prepared.topology);
+  origin_ = prepared.origin;
+  brightestLuminance_ = prepared.brightestLuminance;
+  repairedDrawn_ = prepared.repairedTVertices;
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
-  repairedDrawn_ = repairTVertices;  // only once everything above has succeeded
 }
 
 namespace {
@@ -375,7 +362,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
-  if (settings.repairTVertices != repairedDrawn_) uploadMesh(settings.repairTVertices);
+  if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
   if (settings.method >= ShadingMethod::Quadratic)
     uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
   // The comparison is drawn per pixel: deferred for the C1 methods, by its own Bezier pass for
@@ -408,7 +395,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     }
   }
   glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
-  // What the shaders call world is the mesh's frame (uploadMesh): world minus origin_. The
+  // What the shaders call world is the mesh's frame (prepareMesh): world minus origin_. The
   // product is formed in double, so only coordinates of the scene's own size reach float.
   const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
                                 glm::translate(glm::dmat4(1.0), origin_));

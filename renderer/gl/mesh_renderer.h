@@ -8,6 +8,7 @@
 #include "core/image.h"
 #include "gl/bezier_pass.h"
 #include "gl/deferred_pass.h"
+#include "gl/prepared_mesh.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
 #include "interp/interpolant.h"
@@ -94,7 +95,9 @@ class MeshRenderer {
   MeshRenderer(const MeshRenderer&) = delete;
   MeshRenderer& operator=(const MeshRenderer&) = delete;
 
-  void setMesh(const RadiosityMesh& mesh);
+  void setMesh(const RadiosityMesh& mesh);  // prepareMesh, then adoptMesh
+  // Uploads a mesh prepared on any thread (gl/prepared_mesh.h): what the renderer draws from now.
+  void adoptMesh(PreparedMesh&& prepared);
   void render(const Camera& camera, const RenderSettings& settings, int width, int height);
 
   // The C1 methods per pixel, set up beside a frame loop (the viewer's): where render() would
@@ -183,8 +186,7 @@ class MeshRenderer {
   int shownWidth_ = 0, shownHeight_ = 0;
   ReferenceImage reference_;  // as set, for readComparison
   bool comparedWithImage_ = false;  // what the last difference view used
-  void uploadMesh(bool repairTVertices);
-  RadiosityMesh original_;      // as set
+  std::shared_ptr<const RadiosityMesh> original_;  // as set
   std::shared_ptr<const RadiosityMesh> mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
   std::shared_ptr<const MeshTopology> topology_;  // mesh_'s, built once for the display mesh and every method's pieces
   Vec3 origin_{0.0};    // the world point at the origin of the coordinates the GPU sees

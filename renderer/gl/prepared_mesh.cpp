@@ -1,0 +1,31 @@
+#include "gl/prepared_mesh.h"
+
+#include "interp/t_vertex_repair.h"
+
+#include <algorithm>
+
+namespace radview::gl {
+
+PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices) {
+  RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(*original) : *original;
+  PreparedMesh prepared;
+  // The GPU draws in float32, which resolves only 0.0078 at 1e5 from the origin: a scene there
+  // 1e-3 across collapsed to a few points (tests/gl/extremes_render_test.cpp). Its coordinates
+  // are taken relative to the mesh's centre, in double, before anything becomes float, and
+  // MeshRenderer::render moves the camera's matrix by the same (camera-relative rendering).
+  prepared.origin = mesh.bounds().center();
+  for (Node& node : mesh.nodes) node.position -= prepared.origin;
+  prepared.topology = std::make_shared<const MeshTopology>(mesh);
+  prepared.display = buildDisplayMesh(mesh, *prepared.topology);
+  double brightest = 0.0;
+  for (const Element& e : mesh.elements)
+    if (!mesh.materials[e.material].isEmitter())
+      for (uint32_t n : e.corners) brightest = std::max(brightest, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
+  prepared.brightestLuminance = brightest > 0.0 ? brightest : 1.0;
+  prepared.drawn = std::make_shared<const RadiosityMesh>(std::move(mesh));
+  prepared.original = std::move(original);
+  prepared.repairedTVertices = repairTVertices;
+  return prepared;
+}
+
+}  // namespace radview::gl
