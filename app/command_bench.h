@@ -17,6 +17,9 @@ struct BenchOptions {
   int frames = 9;                  // timed frames per row (median)
   std::string levels = "1,2,4,8,16,32,64";  // tessellation levels of the quadratic and C1 methods
   std::string tolerances = "0.5,2";          // adaptive tessellation tolerances, 8-bit steps
+  // Fixed levels whose triangles would outnumber the image's pixels this many times are not
+  // measured (0: every level is).
+  double maxTrianglesPerPixel = 16.0;
   std::string outDir = "bench";
   double elementSize = 0.0;        // scenes only
 };
