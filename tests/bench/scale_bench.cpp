@@ -3,7 +3,9 @@
 // are interleaved frame by frame, round after round, so that a shared machine's slow spells
 // fall on all of them alike; each method's median is reported with its interquartile range, and
 // its ratio to Gouraud's median of the same rounds. Seconds to the first frame (pieces built,
-// uploaded, drawn, finished) are measured once per method.
+// uploaded, drawn, finished) are measured once per method, and so is the memory its renderer
+// holds after that frame: the growth of the process's resident memory (on llvmpipe the GPU's
+// buffers are part of it).
 //   build/radview_scale_bench [--element-size S]... [--rounds N] [--size WxH] [--methods gouraud,clough-tocher]
 #include "core/camera.h"
 #include "gl/egl_context.h"
@@ -16,6 +18,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <malloc.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,6 +30,17 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// The process's resident memory in MB (VmRSS), after handing freed heap back to the system, so
+// that what a renderer holds shows and what its set-up freed does not.
+double residentMb() {
+  malloc_trim(0);
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmRSS:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
+  return 0.0;
+}
 
 struct Variant {
   const char* name;
@@ -59,8 +74,9 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
       variants.push_back(v);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
   std::vector<std::unique_ptr<MeshRenderer>> renderers;
-  std::vector<double> firstFrame;
+  std::vector<double> firstFrame, heldMb;
   for (const Variant& v : variants) {
+    const double residentBefore = residentMb();
     const auto start = Clock::now();
     renderers.push_back(std::make_unique<MeshRenderer>());
     renderers.back()->setMesh(mesh);
@@ -70,6 +86,7 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
     renderers.back()->render(camera, settings, width, height);
     glFinish();
     firstFrame.push_back(secondsSince(start));
+    heldMb.push_back(residentMb() - residentBefore);
   }
   std::vector<std::vector<double>> ms(variants.size());
   for (int round = 0; round < rounds; ++round)
@@ -84,11 +101,13 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
     }
   std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n",
               mesh.elements.size(), elementSize, meshSeconds, width, height, rounds);
-  std::printf("| method | median ms | IQR ms | / Gouraud | first frame s |\n|---|---|---|---|---|\n");
+  std::printf("| method | median ms | IQR ms | / Gouraud | first frame s | held MB | / Gouraud |\n"
+              "|---|---|---|---|---|---|---|\n");
   const double gouraud = quantile(ms[0], 0.5);
   for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i]);
+    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f | %.0f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i],
+                heldMb[i], heldMb[i] / heldMb[0]);
   std::fflush(stdout);
 }
 
