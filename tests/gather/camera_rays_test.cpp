@@ -2,6 +2,7 @@
 
 #include "gather/final_gather.h"
 #include "gather_scenes.h"
+#include "tests/test_print.h"
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,7 @@ TEST(CameraRaysTest, EveryPointOnARayProjectsBackToItsImagePoint) {
   for (Vec2 pixel : {Vec2(0.5, 0.5), Vec2(199.5, 0.5), Vec2(0.5, 99.5), Vec2(150.5, 20.5), Vec2(0.0, 100.0),
                      Vec2(37.25, 81.75)}) {
     const Ray ray = rays.through(pixel.x, pixel.y);
-    EXPECT_TRUE(ray.origin == camera.eye);
+    EXPECT_EQ(ray.origin, camera.eye);
     EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-12);
     for (double t : {0.5, 2.0, 7.0}) {
       const Vec2 back = projected(camera, width, height, ray.origin + t * ray.direction);

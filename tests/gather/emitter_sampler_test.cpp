@@ -4,6 +4,8 @@
 #include "mesh/uniform_mesher.h"
 #include "solve/patch_sampler.h"
 
+#include "tests/test_print.h"
+
 #include <gtest/gtest.h>
 
 namespace radview {
@@ -27,7 +29,7 @@ TEST(EmitterSamplerTest, PicksEmittersByPowerWithTheMatchingDensity) {
     const double u0 = stream.uniform(), u1 = stream.uniform(), u2 = stream.uniform();
     const EmitterSample s = sampler.sample(u0, u1, u2);
     EXPECT_EQ(s.position.z, 1.0);
-    EXPECT_TRUE(s.normal == Vec3(0, 0, -1));
+    EXPECT_EQ(s.normal, Vec3(0, 0, -1));
     const bool isBright = s.E.r == 3.0;
     ASSERT_TRUE(isBright ? s.position.x >= 2.0 && s.position.x <= 4.0 : s.position.x >= 0.0 && s.position.x <= 1.0);
     ASSERT_GE(s.position.y, 0.0);

@@ -1,7 +1,7 @@
 #include "interp/clough_tocher.h"
 
 #include "tests/interp/test_fields.h"
-#include "tests/interp/test_print.h"
+#include "tests/test_print.h"
 
 #include <gtest/gtest.h>
 
@@ -415,7 +415,7 @@ TEST(CloughTocher, DAndEAreOnThePlanesOfTheirWedges) {
                         w.z * patch.control[prev][bezierIndex(3, 1, 1)];
     const Rgb d = piece[bezierIndex(3, 1, 0)];
     EXPECT_NEAR(glm::length(onPlane - d), 0.0, 1e-14) << "d of inner edge " << i << ", weights " << str(w);
-    EXPECT_TRUE(d == patch.control[prev][bezierIndex(3, 0, 1)]) << "shared by the two pieces";
+    EXPECT_EQ(d, patch.control[prev][bezierIndex(3, 0, 1)]) << "shared by the two pieces";
     meanD += d / 3.0;
   }
   EXPECT_NEAR(glm::length(patch.control[0][bezierIndex(3, 0, 0)] - meanD), 0.0, 1e-15);
@@ -505,7 +505,7 @@ TEST(CloughTocher, DegenerateTriangleIsTheLinearInterpolantAndFinite) {
       const Sample s = evaluate(patch, lambda);
       const Rgb linear = lambda.x * f[0] + lambda.y * f[1] + lambda.z * f[2];
       EXPECT_NEAR(glm::length(s.B - linear), 0.0, 1e-14) << s;
-      for (const Vec3& gc : s.gradient) EXPECT_TRUE(gc == Vec3(0.0)) << s;
+      for (const Vec3& gc : s.gradient) EXPECT_EQ(gc, Vec3(0.0)) << s;
     }
   }
 }
@@ -515,8 +515,8 @@ TEST(CloughTocher, CrossDirections) {
   const Vec3 book = bookCrossDirection(A, B, C);
   EXPECT_NEAR(glm::length(book - Vec3(0, 1, 0)), 0.0, 1e-15) << str(book);
   EXPECT_NEAR(glm::length(bookCrossDirection(B, A, C) - Vec3(0, 1, 0)), 0.0, 1e-15) << "into the triangle either way";
-  EXPECT_TRUE(affineCrossDirection(A, B, C, neighbourC) == neighbourC - C);
-  EXPECT_TRUE(affineCrossDirection(A, B, C, std::nullopt) == C - Vec3(1, 0, 1));
+  EXPECT_EQ(affineCrossDirection(A, B, C, neighbourC), neighbourC - C);
+  EXPECT_EQ(affineCrossDirection(A, B, C, std::nullopt), C - Vec3(1, 0, 1));
 }
 
 // scipy's CloughTocher2DInterpolator (tests/data/scipy_clough_tocher.txt, written by

@@ -1,7 +1,7 @@
 #include "interp/powell_sabin.h"
 
 #include "tests/interp/test_fields.h"
-#include "tests/interp/test_print.h"
+#include "tests/test_print.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
@@ -63,7 +63,7 @@ TEST(PowellSabin, IncenterIsEquidistantFromTheSides) {
     EXPECT_GT(std::min({lambda.x, lambda.y, lambda.z}), 0.0) << "inside";
   }
   const Vec3 a(1, 2, 3);
-  EXPECT_TRUE(incenter(a, a, a) == a);
+  EXPECT_EQ(incenter(a, a, a), a);
 }
 
 // Two triangles T = (A, B, P) and T' = (B, A, Q) sharing edge 0 (A -> B in T), each side's
@@ -105,9 +105,9 @@ TEST(PowellSabin, EdgeSplitPointIsOnTheEdgeAndOnTheSegmentOfTheIncenters) {
     EXPECT_LT(t, 1.0);
     EXPECT_LE(distanceToLine(R, Z, ZN), 1e-15) << "on the segment of the incenters";
     // Both neighbours get the same bits.
-    EXPECT_TRUE(edgeSplitPoint(B, A, ZN, Z) == R);
-    EXPECT_TRUE(edgeSplitPoint(B, A, Z, ZN) == R);
-    EXPECT_TRUE(edgeSplitPoint(A, B, ZN, Z) == R);
+    EXPECT_EQ(edgeSplitPoint(B, A, ZN, Z), R);
+    EXPECT_EQ(edgeSplitPoint(B, A, Z, ZN), R);
+    EXPECT_EQ(edgeSplitPoint(A, B, ZN, Z), R);
     // The neighbour folded about the edge out of the plane: the same point (unfolded).
     const glm::dmat3 fold = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.3 + u01(random), glm::normalize(B - A)));
     const Vec3 Q = A + fold * (e.W[2] - A);
@@ -123,7 +123,7 @@ TEST(PowellSabin, EdgeSplitPointOfFlatNeighbours) {
   EXPECT_TRUE(R.y == 0.0 && R.z == 0.0 && R.x > 0.0 && R.x < 1.0) << str(R);
   EXPECT_LE(distanceToLine(R, Z, ZN), 1e-15);
   // Both degenerate: the midpoint.
-  EXPECT_TRUE(edgeSplitPoint(A, B, Vec3(0.3, 0, 0), Vec3(0.8, 0, 0)) == Vec3(0.5, 0, 0));
+  EXPECT_EQ(edgeSplitPoint(A, B, Vec3(0.3, 0, 0), Vec3(0.8, 0, 0)), Vec3(0.5, 0, 0));
 }
 
 TEST(PowellSabin, InterpolatesCornerValuesAndGradients) {
@@ -370,7 +370,7 @@ TEST(PowellSabin, DegenerateTriangleIsTheLinearInterpolantAndFinite) {
       const Sample s = evaluate(patch, lambda);
       const Rgb linear = lambda.x * f[0] + lambda.y * f[1] + lambda.z * f[2];
       EXPECT_NEAR(glm::length(s.B - linear), 0.0, 1e-14) << s;
-      for (const Vec3& gc : s.gradient) EXPECT_TRUE(gc == Vec3(0.0)) << s;
+      for (const Vec3& gc : s.gradient) EXPECT_EQ(gc, Vec3(0.0)) << s;
     }
   }
 }

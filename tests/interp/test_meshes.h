@@ -4,7 +4,7 @@
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
 #include "mesh/topology.h"
-#include "tests/interp/test_print.h"
+#include "tests/test_print.h"
 
 #include <algorithm>
 #include <array>

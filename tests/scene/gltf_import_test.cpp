@@ -6,6 +6,7 @@
 #include "core/limits.h"
 #include "geom/polygon.h"
 #include "scene/gltf_document.h"
+#include "tests/test_print.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
@@ -22,6 +23,7 @@ namespace radview {
 namespace {
 
 namespace fs = std::filesystem;
+using test::str;
 
 // Builds a glTF model in memory: one buffer, one bufferView per accessor.
 struct GltfBuilder {
@@ -174,13 +176,6 @@ class GltfImportTest : public ::testing::Test {
     EXPECT_NE(m_.find(problem), std::string::npos) << m_;              \
     EXPECT_EQ(m_.find('\n'), std::string::npos) << "one line: " << m_; \
   } while (0)
-
-// gtest's printer cannot see radview's operator<< for glm vectors (no ADL into radview).
-std::string str(const Vec3& v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
 
 void expectNear(const Vec3& actual, const Vec3& expected) {
   EXPECT_NEAR(glm::distance(actual, expected), 0.0, 1e-6) << str(actual) << " vs " << str(expected);
@@ -407,6 +402,23 @@ TEST_F(GltfImportTest, GarbageBytesAreRefused) {
     EXPECT_NE(message.find(name), std::string::npos) << message;
     EXPECT_GT(message.size(), path(name).size() + 2) << "a reason follows the file name: " << message;
   }
+}
+
+// A GLB whose buffer 0 (no uri, so the BIN chunk) declares byteLength 0 beside a 4-byte BIN
+// chunk: tinygltf indexes an empty vector with at() and throws std::out_of_range. Found by the
+// glTF fuzz target; the same bytes are kept in tests/fuzz/regressions/gltf/.
+TEST_F(GltfImportTest, BinChunkBesideAnEmptyBufferIsRefused) {
+  const std::string json =
+      R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":0,"ur_":"data:application/gltf-buffer,0"}]} )";
+  const auto le32 = [](uint32_t v) { return std::string{char(v), char(v >> 8), char(v >> 16), char(v >> 24)}; };
+  const std::string bin = "\xff\xff\xff\xff";
+  const std::string bytes = "glTF" + le32(2) + le32(uint32_t(12 + 8 + json.size() + 8 + bin.size())) +
+                            le32(uint32_t(json.size())) + "JSON" + json + le32(uint32_t(bin.size())) +
+                            std::string("BIN\0", 4) + bin;
+  writeBytes("empty_buffer.glb", bytes);
+  const std::string message = errorOf(path("empty_buffer.glb"));
+  EXPECT_NE(message.find("empty_buffer.glb"), std::string::npos) << message;
+  EXPECT_NE(message.find("malformed"), std::string::npos) << message;
 }
 
 TEST_F(GltfImportTest, AccessorOutOfRange) {

@@ -6,7 +6,7 @@
 #include "mesh/topology.h"
 #include "solve/discontinuity_mesher.h"
 
-#include "tests/interp/test_print.h"
+#include "tests/test_print.h"
 
 #include <gtest/gtest.h>
 

@@ -11,7 +11,7 @@
 #include "solve/direct_light.h"
 #include "solve/discontinuity_segments.h"
 
-#include "tests/interp/test_print.h"
+#include "tests/test_print.h"
 
 #include <gtest/gtest.h>
 
