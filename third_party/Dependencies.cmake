@@ -1,5 +1,5 @@
 # Finds radview's dependencies (all Debian 12 packages, installed by install-deps.sh)
-# and papers over the packaging quirks recorded in ../shared/PLATFORM.md.
+# and papers over their packaging quirks, each explained where it is handled below.
 find_package(PkgConfig REQUIRED)
 find_package(glm CONFIG REQUIRED)
 find_package(glfw3 3.3 CONFIG REQUIRED)

@@ -1,5 +1,5 @@
 #pragma once
-// A Mach-band measure (C&W §9.2.1): the eye sees a jump in the gradient of displayed
+// A Mach-band measure (C&W §9.2.2): the eye sees a jump in the gradient of displayed
 // luminance as a band, and linear interpolation puts one at every element edge, where the
 // radiosity function itself is smooth. The measure is the mean jump of the image gradient
 // across element edges, taken on four-pixel stencils p0 p1 | p2 p3 along a row or column that

@@ -61,6 +61,15 @@ inline constexpr size_t kMaxDiscontinuityEdges = kMaxSolutionNodes;
 // C0, then C1), longer first within an order; the rest are dropped and counted.
 inline constexpr size_t kMaxSegmentsPerPolygon = 1000;
 
+// Every file radview writes it can read: the solver and meshers make at most kMaxMeshElements,
+// T-vertex triangulation may multiply them, and the solution file's limits leave room for that;
+// every accessor of a solution at the limits fits the accessor limit.
+static_assert(kMaxSolutionElements >= kMaxMeshElements);
+static_assert(kMaxSolutionNodes >= kMaxSolutionElements);
+static_assert(kMaxStoredVertices >= kMaxSolutionNodes);
+static_assert(kMaxAccessorElements >= kMaxStoredVertices);
+static_assert(kMaxSceneTriangles <= kMaxAccessorElements);
+
 // --- images ----------------------------------------------------------------------------------
 
 // Width and height of a render, a bench view or a window (--size). 16384 is the largest

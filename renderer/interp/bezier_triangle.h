@@ -26,7 +26,7 @@ using RgbGradient = std::array<Vec3, 3>;  // [c] = gradient of channel c
 // orthogonal: grad is exact to ~1e-13 at aspect 1e7, where N from the two long edges loses
 // ~1e-9. lambda(x) itself is ill-conditioned on any sliver: rounding x - V to doubles moves x
 // by ~eps |x - V| and lambda by that over the triangle's height, and that bound, ~eps * aspect,
-// is what this (and every double-precision formulation we measured) attains.
+// is what this (and every double-precision formulation measured) attains.
 // Degenerate (|N| <= 16 eps L^2, L the longest edge: the normal is round-off): grad is zero
 // and lambda(x) projects x onto the longest edge (clamped to it), coordinate 0 for the third
 // vertex; all three vertices coincident: (1/3, 1/3, 1/3). Never NaN for finite input.

@@ -182,10 +182,10 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
     const int k0 = int(sides[first].edge), k1 = int(sides[first + 1].edge);
     // The far vertex of one is measured from the plane of the other whose normal is the better
     // conditioned, the one with the larger smallest height (a triangle's normal is good to
-    // ~eps |x| / that height). Measured from a sliver's plane, as it was when the sliver came
-    // first, a planar neighbour's far vertex was off by that error times the neighbour's size,
-    // and the edge read as a crease: no neighbour, no C1 across it (a sliver of height 6e-8
-    // beside a triangle of size 0.1, c1_mesh_test's sliver meshes).
+    // ~eps |x| / that height). Measured from a sliver's plane, a planar neighbour's far vertex
+    // would be off by that error times the neighbour's size, and the edge would read as a
+    // crease: no neighbour, no C1 across it (a sliver of height 6e-8 beside a triangle of size
+    // 0.1, c1_mesh_test's sliver meshes).
     const bool firstIsReference = smallestHeight(t0) >= smallestHeight(t1);
     const uint32_t reference = firstIsReference ? t0 : t1, other = firstIsReference ? t1 : t0;
     const int otherEdge = firstIsReference ? k1 : k0;

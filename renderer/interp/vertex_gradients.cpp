@@ -45,9 +45,9 @@ std::array<Vec2, 3> solveSymmetric2(double a, double b, double d, const std::arr
   const double l1 = 0.5 * trace + disc, l2 = 0.5 * trace - disc;  // l1 >= l2 >= 0
   if (!(l1 > 0.0)) return out;
   // Eigenvector of l1, from the row of M - l1 I without cancellation: (l1 - d, b) when a >= d,
-  // else (b, l1 - a). Always (l1 - d, b), as it was, lost its direction to the rounding of
-  // l1 - d (a tiny difference when a < d and b is small): a regular, symmetric stencil gave
-  // gradients of exactly linear data wrong by 1e-8 (extremes_test, the needle-row mesh).
+  // else (b, l1 - a). When a < d and b is small, l1 - d is a tiny difference whose rounding
+  // turns (l1 - d, b) away from the eigenvector: gradients of exactly linear data would be off
+  // by 1e-8 on a regular, symmetric stencil (extremes_test, the needle-row mesh).
   Vec2 e1 = std::abs(b) > 1e-300 ? (a >= d ? Vec2(l1 - d, b) : Vec2(b, l1 - a)) : (a >= d ? Vec2(1, 0) : Vec2(0, 1));
   e1 = glm::normalize(e1);
   const Vec2 e2(-e1.y, e1.x);

@@ -59,15 +59,15 @@ struct DrawnCorner {
 // MeshTopology's T-vertices, listed by the element whose edge each lies on.
 std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, const MeshTopology& topology);
 
-// elementTriangles with the element's T-vertices (its list from tVerticesByElement) made corners of its outline, so that both sides of a T-junction are drawn through
-// the same vertices, while the element keeps its own interpolation: each triangle along an edge
-// with T-vertices is fanned through them from its opposite corner, and a T-vertex gets the value
-// interpolated linearly along that edge, where the triangle had it already (Gouraud, flat and the
-// per-pixel methods show the same picture). Without this the rasteriser, which snaps vertices to
-// its sub-pixel grid, can pass a pixel centre between the neighbour's edges through the T-vertex
-// and the element's straight edge: a single background pixel in a wall of the solved Cornell box
-// (C&W §9.2 on T-vertices; tests/gl/extremes_render_test.cpp).
-
+// elementTriangles with the element's T-vertices (its list from tVerticesByElement) made
+// corners of its outline, so that both sides of a T-junction are drawn through the same
+// vertices, while the element keeps its own interpolation: each triangle along an edge with
+// T-vertices is fanned through them from its opposite corner, and a T-vertex gets the value
+// interpolated linearly along that edge, where the triangle had it already (Gouraud, flat and
+// the per-pixel methods show the same picture). Without this the rasteriser, which snaps
+// vertices to its sub-pixel grid, can pass a pixel centre between the neighbour's edges through
+// the T-vertex and the element's straight edge: a single background pixel in a wall of the
+// solved Cornell box (C&W §9.2 on T-vertices; tests/gl/extremes_render_test.cpp).
 std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
                                                             const std::vector<TVertex>& tVertices);
 

@@ -1,4 +1,5 @@
-// The limits' one message form, and the relations between limits that the code relies on.
+// The limits' one message form (the relations between limits are checked where they are
+// defined, core/limits.h, at compile time).
 #include "core/limits.h"
 
 #include "core/error.h"
@@ -16,17 +17,6 @@ TEST(Limits, PastALimitTheErrorNamesTheSourceTheValueAndTheLimit) {
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(), "scene.glb: 3000000000 nodes, more than radview's limit of 16000000");
   }
-}
-
-TEST(Limits, EveryFileRadviewWritesItCanRead) {
-  // The solver and meshers make at most kMaxMeshElements; T-vertex triangulation may multiply
-  // them, and the solution file limits leave room for that.
-  static_assert(kMaxSolutionElements >= kMaxMeshElements);
-  static_assert(kMaxSolutionNodes >= kMaxSolutionElements);
-  static_assert(kMaxStoredVertices >= kMaxSolutionNodes);
-  // Every accessor of a solution at the limits fits the accessor limit.
-  static_assert(kMaxAccessorElements >= kMaxStoredVertices);
-  static_assert(kMaxSceneTriangles <= kMaxAccessorElements);
 }
 
 }  // namespace

@@ -250,7 +250,7 @@ TEST(Extremes, HighDynamicRangeDataStaysFiniteAndTheC1MethodsGoNegativeByAMeasur
   // gradients are huge and the patches of its dim neighbours dip below zero. Measured and
   // printed: min B relative to the largest nodal value around the element (the nodes of all
   // elements sharing a vertex with it), and the share of elements that go negative; asserted
-  // no worse than -1/2 of that neighbourhood value.
+  // no worse than -0.12 of that neighbourhood value.
   for (int kind = 0; kind < 2; ++kind) {
     RadiosityMesh mesh = gridMesh(8, false, 0.3, linear, 31, plane);
     std::mt19937 random(7);
@@ -309,7 +309,8 @@ TEST(Extremes, HighDynamicRangeDataStaysFiniteAndTheC1MethodsGoNegativeByAMeasur
       if (m.method == Method::Linear || m.method == Method::Bilinear) {
         EXPECT_EQ(negative, 0) << m.name;
       }
-      EXPECT_LE(worst, 0.5) << m.name;
+      // Measured: at most 0.096 of the neighbourhood's value (c1-quadratic on 10^(16x - 8)).
+      EXPECT_LE(worst, 0.12) << m.name << " went below zero by " << worst << " of the largest value around (0.096 measured)";
     }
   }
 }
@@ -399,8 +400,9 @@ TEST(Extremes, ZeroAreaTrianglesGiveNeitherNaNNorAnAbort) {
 
 TEST(Extremes, BilinearAndSerendipityQuadsFallBackToLinearOnNonConvexQuads) {
   // One quad with a reflex corner (from a jittered grid, seed 14 of reproduction_test). Its
-  // bilinear map folds; Newton's inverse used to wander, giving B off by 66 on data of size 6
-  // at its own corners. Now linear: corners interpolated, linear data reproduced.
+  // bilinear map folds, and Newton's inverse of a folded map can wander off (B off by 66 on
+  // data of size 6 at its own corners): such a quad is interpolated linearly, so its corners
+  // are interpolated and linear data reproduced.
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"grey", Rgb(0.5), Rgb(0.0)});
   for (const Vec2& p : {Vec2(0.84, 2.29), Vec2(1.77, 1.80), Vec2(1.71, 3.25), Vec2(1.29, 2.72)})

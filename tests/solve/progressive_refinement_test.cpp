@@ -61,8 +61,9 @@ TEST(ProgressiveRefinementTest, AmbientTermShowsAPartialFurnaceSolutionNearItsLi
     meanWithout += without.nodes[i].B.g / with.nodes.size();
     meanWith += with.nodes[i].B.g / with.nodes.size();
   }
-  EXPECT_LT(meanWithout, 1.9);
-  EXPECT_NEAR(meanWith, 2.0, 0.05);
+  std::printf("partial furnace after 96 shots: mean B %.4f without the ambient term, %.4f with it\n", meanWithout, meanWith);
+  EXPECT_LT(meanWithout, 1.75) << "measured 1.666: a sixth of the light still unshot";
+  EXPECT_NEAR(meanWith, 2.0, 0.03) << "measured 2.011";
 }
 
 TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergyBetterOnFinerMeshes) {
