@@ -25,8 +25,8 @@ gl::RenderSettings BackgroundPieces::frame(gl::MeshRenderer& renderer, const gl:
   gl::RenderSettings drawn = settings;
   if (key != failed_)
     if (std::function<gl::DeferredSetup()> job = renderer.piecesSetup(settings)) {
-      start(std::move(job), key, gl::shadingMethodNames()[size_t(settings.method)]);
-      drawn.method = gl::ShadingMethod::Gouraud;
+      start(std::move(job), key, methodName(settings.method));
+      drawn.method = Method::Gouraud;
     }
   if (running()) status = this->status();
   return drawn;

@@ -1,6 +1,7 @@
 #include "app/command_bench.h"
 
 #include "app/commands.h"
+#include "app/method_choice.h"
 #include "app/viewed_file.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
@@ -56,7 +57,7 @@ double median(std::vector<double> values) {
 
 // A GL method at one setting: what a row renders.
 struct Variant {
-  gl::ShadingMethod method;
+  Method method;
   int tessellation = 0;  // 0 per pixel, a level, or kAdaptiveTessellation
   double tolerance = 0.5;
   bool relaxed = true;   // C0 edges tagged (false: the mesh without its C0 tags)
@@ -99,6 +100,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       ->check(CLI::Range(1, kMaxGatherSpp))
       ->capture_default_str();
   command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
+      ->check(methodChoice(methodNames(true)))
       ->capture_default_str();
   command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
       ->check(CLI::Range(1, kMaxBenchFrames))
@@ -175,11 +177,15 @@ int runBench(const BenchOptions& options) {
   const bool hasC0 = unrelaxed.discontinuities.size() != mesh.discontinuities.size();
 
   std::vector<Variant> variants;
-  using M = gl::ShadingMethod;
-  for (M m : {M::Flat, M::Gouraud, M::ScanlineGouraud, M::Bilinear}) variants.push_back({m, 0, 0.5, true, "per pixel"});
-  for (M m : {M::Quadratic, M::C1Quadratic, M::CloughTocher})
+  for (const MethodInfo& info : methodRegistry()) {
+    const Method m = info.method;
+    if (!info.bezierPieces) {
+      variants.push_back({m, 0, 0.5, true, "per pixel"});
+      continue;
+    }
+    // Relaxation along C0 edges is what the C1 methods do; without C0 tags there is nothing to drop.
     for (bool relaxed : {true, false}) {
-      if (!relaxed && !(m != M::Quadratic && hasC0)) continue;
+      if (!relaxed && !(info.c1 && hasC0)) continue;
       const std::string suffix = relaxed ? "" : ", C0 not relaxed";
       variants.push_back({m, 0, 0.5, relaxed, "per pixel" + suffix});
       for (int level : levels) variants.push_back({m, level, 0.5, relaxed, "level " + std::to_string(level) + suffix});
@@ -189,6 +195,7 @@ int runBench(const BenchOptions& options) {
         variants.push_back({m, gl::kAdaptiveTessellation, t, relaxed, name + suffix});
       }
     }
+  }
 
   gl::EglContext context;
   gl::MeshRenderer renderer;
@@ -208,7 +215,7 @@ int runBench(const BenchOptions& options) {
     if (fixedLevel && options.maxTrianglesPerPixel > 0.0 && perLevelSquared != trianglesPerLevelSquared.end() &&
         perLevelSquared->second * v.tessellation * v.tessellation >
             options.maxTrianglesPerPixel * double(width) * double(height)) {
-      skipped.push_back(gl::shadingMethodNames()[int(v.method)] + " " + v.setting);
+      skipped.push_back(methodName(v.method) + " " + v.setting);
       continue;
     }
     if (v.relaxed != relaxedLoaded) {
@@ -233,13 +240,13 @@ int runBench(const BenchOptions& options) {
       ms.push_back(renderer.gpuFrameMs());
     }
     TradeoffRow row;
-    row.method = gl::shadingMethodNames()[int(v.method)];
+    row.method = methodName(v.method);
     row.setting = v.setting;
     row.frameMs = median(ms);
     const auto& tess = renderer.tessellationStatistics();
     if (fixedLevel)
       trianglesPerLevelSquared[methodAndMesh] = double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
-    row.triangles = v.method < M::Quadratic ? renderer.triangleCount()
+    row.triangles = !methodInfo(v.method).bezierPieces ? renderer.triangleCount()
                     : v.tessellation == 0   ? tess.patches
                                             : tess.trianglesGenerated;
     if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's

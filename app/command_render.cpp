@@ -34,7 +34,7 @@ void checkImageMemory(const std::string& sizeText, int width, int height, uint64
 
 gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   gl::RenderSettings settings;
-  settings.method = gl::shadingMethodFromName(display.method);
+  settings.method = methodFromName(display.method);
   settings.perspectiveCorrect = !display.screenSpace;
   settings.exposure = display.exposure;
   settings.view = gl::displayViewFromName(display.view);
@@ -54,7 +54,7 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))
     throw Error("--tolerance " + std::to_string(display.tolerance) + ": expected 0.01 .. 100 8-bit steps");
   settings.tessellationTolerance = display.tolerance / 255.0;
-  settings.comparisonMethod = gl::shadingMethodFromName(display.compareWith);
+  settings.comparisonMethod = methodFromName(display.compareWith);
   settings.comparison = display.reference.empty() ? gl::RenderSettings::Comparison::Method
                                                   : gl::RenderSettings::Comparison::Image;
   if (!display.reference.empty() && settings.view != gl::DisplayView::Difference)

@@ -4,6 +4,7 @@
 // million of them on a million elements take seconds.
 #include "app/commands.h"
 #include "app/viewed_file.h"
+#include "core/camera.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "interp/interpolant.h"
@@ -126,6 +127,12 @@ int runSample(const SampleOptions& options) {
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize);
   const RadiosityMesh& mesh = viewed.mesh;
+  if (methodInfo(method).viewDependent) {
+    int width = 0, height = 0;
+    parseSize(options.size, width, height);
+    const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
+    interpolantOptions.view = ScreenView{camera.clipFromWorld(double(width) / height), Vec2(width, height)};
+  }
   std::string text, source = "--points";
   if (options.points == "-") {
     text = readAll(std::cin);
@@ -165,7 +172,7 @@ int runSample(const SampleOptions& options) {
 
   std::printf("# radview sample %s --method %s: element x y z distance B_r B_g B_b "
               "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
-              options.file.c_str(), options.method.c_str());
+              options.file.c_str(), methodName(method).c_str());
   // Evaluated and formatted on every core, a block of lines at a time, written in order.
   constexpr size_t kLine = 512, kBlock = 16384;  // a line is at most 10 + 18 * 25 characters
   std::vector<char> lines(kLine * std::min(kBlock, points.size()));

@@ -36,7 +36,7 @@ struct DisplayOptions {
 struct GatherOptions {
   int spp = 16;                       // samples (passes) per pixel, 1 .. kMaxGatherSpp
   uint64_t seed = 1;
-  std::string interpolant = "linear";  // B^ under the integral: an interp method name
+  std::string interpolant = "gouraud";  // B^ under the integral: a view-independent method
   int emitterSamples = 1;             // shadow rays per pixel per pass
   std::string givenWithGlMethod;      // a gather option given without final-gather, for the error
 };
@@ -60,7 +60,9 @@ struct SampleOptions {
   std::string file;
   std::string method = "clough-tocher";
   std::string points;          // a file, '-' for standard input, or the points themselves
-  std::string diagonal = "02";  // linear: the quad diagonal, 02 or 13
+  std::string diagonal = "02";  // gouraud: the quad diagonal, 02 or 13
+  std::string camera;           // scanline-gouraud: the view, as render --camera
+  std::string size = "1024x768";  // scanline-gouraud: the view's image size
   std::string variant = "affine";  // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps

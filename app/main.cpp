@@ -4,6 +4,7 @@
 #include "app/command_bench.h"
 #include "app/command_solve.h"
 #include "app/commands.h"
+#include "app/method_choice.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
 #include "core/error.h"
@@ -32,7 +33,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
                          std::string(finalGather ? "; or final-gather (C&W §9.3.1: eq. 9.9 per pixel by ray "
                                                    "casting, the interpolant --gather-interpolant under the integral)"
                                                  : ""))
-      ->check(CLI::IsMember(methods))
+      ->check(methodChoice(methods))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
                    "Gouraud linear in screen space, as scanline hardware did, not perspective-correct");
@@ -51,7 +52,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
   command.add_option("--compare-with", d.compareWith,
                      "--view difference: the method to subtract, evaluated exactly per pixel (a tessellated "
                      "method against itself shows its tessellation error)")
-      ->check(CLI::IsMember(gl::shadingMethodNames()))
+      ->check(methodChoice(methodNames()))
       ->capture_default_str();
   command.add_option("--reference", d.reference,
                      "--view difference: an image to subtract instead, the size of the render: a float file "
@@ -96,8 +97,9 @@ void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& sp
       ->capture_default_str();
   command.add_option("--seed", g.seed, "final-gather: random seed (same seed, same image)")->capture_default_str();
   command.add_option("--gather-interpolant", g.interpolant,
-                     "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9")
-      ->check(CLI::IsMember(methodNames()))
+                     "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9 (one that "
+                     "needs no view)")
+      ->check(methodChoice(methodNames(true)))
       ->capture_default_str();
   command.add_option("--emitter-samples", g.emitterSamples,
                      "final-gather: shadow rays to the emitters per pixel per pass, 1.." +
@@ -131,7 +133,7 @@ int main(int argc, char** argv) {
   app.add_flag("--solve", viewer.solve,
                "Solve the scene in the background at once (as radview solve), showing it as it converges");
   // Both the window and render show the GL methods and the final gather.
-  std::vector<std::string> methods = gl::shadingMethodNames();
+  std::vector<std::string> methods = methodNames();
   methods.push_back(kFinalGather);
   addDisplayOptions(app, viewer.display, methods);
   addGatherOptions(app, viewer.gather,
@@ -163,7 +165,11 @@ int main(int argc, char** argv) {
       "sample", "Print the reconstructed radiosity B and its surface gradient at points (CPU reference)");
   sampleCommand->add_option("file", sample.file, "A glTF scene or radview solution file")->required();
   sampleCommand->add_option("--method", sample.method, "Interpolant")
-      ->check(CLI::IsMember(methodNames()))
+      ->check(methodChoice(methodNames()))
+      ->capture_default_str();
+  sampleCommand->add_option("--camera", sample.camera,
+                            "scanline-gouraud: the view it is seen in, as render --camera");
+  sampleCommand->add_option("--size", sample.size, "scanline-gouraud: the image size of that view, WIDTHxHEIGHT")
       ->capture_default_str();
   sampleCommand
       ->add_option("--points", sample.points,
@@ -171,7 +177,7 @@ int main(int argc, char** argv) {
                    "each 'x y z' (world space, projected onto the nearest element) or 'element b0 b1 b2' "
                    "(barycentric in the element's first three corners)")
       ->required();
-  sampleCommand->add_option("--diagonal", sample.diagonal, "linear: cut quads along corners 02 or 13")
+  sampleCommand->add_option("--diagonal", sample.diagonal, "gouraud: cut quads along corners 02 or 13")
       ->check(CLI::IsMember({"02", "13"}))
       ->capture_default_str();
   sampleCommand->add_option("--variant", sample.variant,

@@ -41,17 +41,13 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   ViewerState& s = *static_cast<Input*>(glfwGetWindowUserPointer(window))->state;
+  // GLFW's number keys are their characters' codes.
+  if (const std::optional<Method> method = key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
+    s.settings.method = *method;
+    s.gather.on = false;
+    return;
+  }
   switch (key) {
-    case GLFW_KEY_1:
-    case GLFW_KEY_2:
-    case GLFW_KEY_3:
-    case GLFW_KEY_4:
-    case GLFW_KEY_5:
-    case GLFW_KEY_6:
-    case GLFW_KEY_7:
-      s.settings.method = static_cast<gl::ShadingMethod>(key - GLFW_KEY_1);
-      s.gather.on = false;
-      break;
     case GLFW_KEY_9: s.gather.on = true; break;
     case GLFW_KEY_V:
       s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book ? CloughTocherVariant::AffineInvariant

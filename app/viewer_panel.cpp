@@ -24,18 +24,37 @@ void resetCamera(ViewerState& state) {
   state.rollSteps = 0;
 }
 
-const char* shortcutHelp() {
-  return "Viewer keys: 1 flat, 2 Gouraud, 3 scanline Gouraud, 4 bilinear, 5 quadratic, 6 C1 quadratic,\n"
-         "7 Clough-Tocher, V its book / affine variant, 9 the final gather (eq. 9.9 per pixel, converging),\n"
-         "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
-         "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
-         "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
-         "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
-         "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder), Esc quit. Mouse: left drag orbit, right or\n"
-         "middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to open it.";
+const std::string& shortcutHelp() {
+  static const std::string help = [] {
+    std::string keys = "Viewer keys:";
+    for (const MethodInfo& info : methodRegistry())
+      keys += std::string(int(info.method) == 4 ? "\n" : " ") + info.key + " " + info.label + ",";
+    return keys +
+           " 9 the final gather\n"
+           "(eq. 9.9 per pixel, converging), V Clough-Tocher's book / affine variant,\n"
+           "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
+           "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
+           "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
+           "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
+           "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder), Esc quit.\n"
+           "Mouse: left drag orbit, right or middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to "
+           "open it.";
+  }();
+  return help;
 }
 
 namespace {
+
+// A combo of the registry's methods; `viewIndependentOnly` leaves out those that need a view.
+void methodCombo(const char* title, Method& method, bool viewIndependentOnly) {
+  if (!ImGui::BeginCombo(title, methodInfo(method).label.c_str())) return;
+  for (const MethodInfo& info : methodRegistry()) {
+    if (viewIndependentOnly && info.viewDependent) continue;
+    if (ImGui::Selectable(info.label.c_str(), info.method == method)) method = info.method;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", info.summary.c_str(), info.section.c_str());
+  }
+  ImGui::EndCombo();
+}
 
 // ImGui 1.86 has no SeparatorText.
 void section(const char* title) {
@@ -55,10 +74,7 @@ void drawDifferenceControls(ViewerState& state) {
   ImGui::RadioButton("minus an image", &against, 1);
   s.comparison = static_cast<gl::RenderSettings::Comparison>(against);
   if (s.comparison == gl::RenderSettings::Comparison::Method) {
-    int other = static_cast<int>(s.comparisonMethod);
-    ImGui::Combo("Method, per pixel", &other,
-                 "Flat\0Gouraud\0Scanline Gouraud\0Bilinear\0Quadratic\0C1 quadratic\0Clough-Tocher\0");
-    s.comparisonMethod = static_cast<gl::ShadingMethod>(other);
+    methodCombo("Method, per pixel", s.comparisonMethod, false);
   } else {
     char buffer[1024];
     std::snprintf(buffer, sizeof buffer, "%s", state.referencePath.c_str());
@@ -78,12 +94,10 @@ void drawDifferenceControls(ViewerState& state) {
 void drawGatherControls(ViewerState& state) {
   GatherControls& g = state.gather;
   section("Final gather (C&W 9.3.1, eq. 9.9)");
-  int interpolant = static_cast<int>(g.interpolant);
   ImGui::PushItemWidth(200);
-  ImGui::Combo("B^ interpolant", &interpolant, "flat\0linear\0bilinear\0quadratic\0c1-quadratic\0clough-tocher\0");
+  methodCombo("B^ interpolant", g.interpolant, true);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Reconstructs the solution under the integral (the CPU interpolant, as radview sample)");
-  g.interpolant = static_cast<Method>(interpolant);
   ImGui::SliderInt("Shadow rays per pass", &g.emitterSamples, 1, 16);
   ImGui::SliderInt("Stop at, spp", &g.targetSpp, 1, kMaxGatherSpp, "%d", ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
@@ -100,7 +114,7 @@ void drawGatherControls(ViewerState& state) {
     ImGui::Text("%d spp%s, %.1f s, %.2fM rays/s", p.spp, p.reachedTarget ? " (done)" : g.paused ? " (paused)" : "",
                 p.seconds, raysPerSecond * 1e-6);
   }
-  const char* method = gl::shadingMethodNames()[size_t(state.settings.method)].c_str();
+  const char* method = methodInfo(state.settings.method).label.c_str();
   ImGui::TextDisabled("while the view moves: %s", method);
 }
 
@@ -164,37 +178,36 @@ void drawPanel(ViewerState& state) {
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
 
   section("Interpolant (C&W 9.2)");
-  constexpr int kFinalGatherChoice = 7;  // after the seven GL methods
+  const int kFinalGatherChoice = int(methodRegistry().size());  // after the methods
   int method = state.gather.on ? kFinalGatherChoice : static_cast<int>(state.settings.method);
-  static const char* const labels[] = {"Flat",     "Gouraud",      "Scanline Gouraud", "Bilinear",
-                                       "Quadratic", "C1 quadratic", "Clough-Tocher"};
-  for (int m = 0; m < 7; ++m) {
-    const std::string label = std::string(labels[m]) + " [" + std::to_string(m + 1) + "]";
-    if (m % 2) ImGui::SameLine(190);
-    ImGui::RadioButton(label.c_str(), &method, m);
+  for (const MethodInfo& info : methodRegistry()) {
+    const std::string label = info.label + " [" + info.key + "]";
+    if (int(info.method) % 2) ImGui::SameLine(190);
+    ImGui::RadioButton(label.c_str(), &method, int(info.method));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", info.summary.c_str(), info.section.c_str());
   }
-  ImGui::SameLine(190);
+  if (kFinalGatherChoice % 2) ImGui::SameLine(190);
   ImGui::RadioButton("Final gather [9]", &method, kFinalGatherChoice);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("C&W 9.3.1: eq. 9.9 per pixel by ray casting, converging in the background");
   state.gather.on = method == kFinalGatherChoice;
-  if (!state.gather.on) state.settings.method = static_cast<gl::ShadingMethod>(method);
-  if (state.settings.method == gl::ShadingMethod::Gouraud) {
+  if (!state.gather.on) state.settings.method = static_cast<Method>(method);
+  if (state.settings.method == Method::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Off: interpolate linearly in screen space, as classic Gouraud hardware did (9.2, note 3)");
   }
-  if (state.settings.method == gl::ShadingMethod::CloughTocher) {
+  if (state.settings.method == Method::CloughTocher) {
     bool book = state.settings.cloughTocher == CloughTocherVariant::Book;
     if (ImGui::Checkbox("Book cross-boundary direction [V]", &book))
       state.settings.cloughTocher = book ? CloughTocherVariant::Book : CloughTocherVariant::AffineInvariant;
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Edge normal, as the text reads; off: centroid to centroid (affine invariant, default)");
   }
-  if (state.settings.method == gl::ShadingMethod::ScanlineGouraud)
+  if (state.settings.method == Method::ScanlineGouraud)
     ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
-  if (state.settings.method == gl::ShadingMethod::Bilinear) ImGui::TextDisabled("exact per pixel");
-  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+  if (state.settings.method == Method::Bilinear) ImGui::TextDisabled("exact per pixel");
+  if (methodInfo(state.settings.method).bezierPieces) {
     // Exact per pixel, a fixed tessellation level, or the adaptive level (C&W 9.2).
     int mode = state.settings.tessellation == 0 ? 0 : state.settings.tessellation == gl::kAdaptiveTessellation ? 2 : 1;
     ImGui::RadioButton("Per pixel", &mode, 0);
@@ -253,9 +266,9 @@ void drawPanel(ViewerState& state) {
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
-  if (state.settings.method >= gl::ShadingMethod::C1Quadratic)
+  if (methodInfo(state.settings.method).c1)
     ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
-  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+  if (methodInfo(state.settings.method).bezierPieces) {
     bool surface = state.settings.surfaceHeight > 0.0;
     if (ImGui::Checkbox("Radiosity surface, fig. 9.13 [H]", &surface)) state.settings.surfaceHeight = surface ? 0.15 : 0.0;
     if (surface) {
@@ -266,7 +279,7 @@ void drawPanel(ViewerState& state) {
       ImGui::Checkbox("Control net [N]", &state.settings.controlNet);
     }
   }
-  if (state.settings.method >= gl::ShadingMethod::Quadratic && state.settings.tessellation != 0)
+  if (methodInfo(state.settings.method).bezierPieces && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
 
   drawSolveControls(state);
@@ -289,7 +302,7 @@ void drawPanel(ViewerState& state) {
 
   section("Frame");
   ImGui::Text("GPU %.2f ms   CPU %.2f ms", state.gpuFrameMs, state.cpuFrameMs);
-  if (state.settings.method >= gl::ShadingMethod::Quadratic) {
+  if (methodInfo(state.settings.method).bezierPieces) {
     const gl::TessellationStatistics& t = state.tessellation;
     ImGui::Text("%zu patches, %zu draws, mean level %.2f", t.patches, t.draws, t.averageLevel);
     ImGui::Text("%zu triangles generated", t.trianglesGenerated);
@@ -297,7 +310,7 @@ void drawPanel(ViewerState& state) {
     ImGui::Text("%zu triangles", state.triangles);
   }
   if (!state.status.empty()) ImGui::TextWrapped("%s", state.status.c_str());
-  if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(shortcutHelp());
+  if (ImGui::CollapsingHeader("Keys")) ImGui::TextUnformatted(shortcutHelp().c_str());
   ImGui::End();
 }
 

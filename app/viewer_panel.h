@@ -15,7 +15,7 @@ namespace radview {
 // the view moves): what the panel and the command line set, and what the gather reports.
 struct GatherControls {
   bool on = false;
-  Method interpolant = Method::Linear;  // B^ under the integral of eq. 9.9
+  Method interpolant = Method::Gouraud;  // B^ under the integral of eq. 9.9
   int emitterSamples = 1;               // shadow rays per pixel per pass
   uint64_t seed = 1;
   int targetSpp = 1024;  // it stops at this many samples per pixel
@@ -54,7 +54,7 @@ void rotateView45(ViewerState& state);
 void resetCamera(ViewerState& state);
 
 // Keyboard shortcuts, as listed in the panel and in --help.
-const char* shortcutHelp();
+const std::string& shortcutHelp();
 
 void drawPanel(ViewerState& state);
 

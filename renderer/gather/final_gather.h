@@ -48,7 +48,7 @@
 namespace radview {
 
 struct GatherSettings {
-  Method interpolant = Method::Linear;  // B^ under the integral
+  Method interpolant = Method::Gouraud;  // B^ under the integral
   InterpolantOptions interpolantOptions;
   uint64_t seed = 1;
   int width = 256, height = 256;

@@ -14,19 +14,6 @@
 
 namespace radview::gl {
 
-const std::vector<std::string>& shadingMethodNames() {
-  static const std::vector<std::string> names = {"flat",      "gouraud",      "scanline-gouraud", "bilinear",
-                                                 "quadratic", "c1-quadratic", "clough-tocher"};
-  return names;
-}
-
-ShadingMethod shadingMethodFromName(const std::string& name) {
-  const auto& names = shadingMethodNames();
-  for (size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<ShadingMethod>(i);
-  throw Error("unknown shading method '" + name + "' (expected one of " + joined(names) + ")");
-}
-
 const std::vector<std::string>& displayViewNames() {
   static const std::vector<std::string> names = {"normal", "value", "gradient", "isolines", "difference"};
   return names;
@@ -176,13 +163,13 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
 
 namespace {
 
-int piecesKey(ShadingMethod method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
-int degreeOf(ShadingMethod method) { return method == ShadingMethod::CloughTocher ? 3 : 2; }
+int piecesKey(Method method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
+int degreeOf(Method method) { return method == Method::CloughTocher ? 3 : 2; }
 
 }  // namespace
 
-bool MeshRenderer::isDeferred(ShadingMethod method, const BezierEvaluation& evaluation) {
-  return (method == ShadingMethod::C1Quadratic || method == ShadingMethod::CloughTocher) &&
+bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation) {
+  return (method == Method::C1Quadratic || method == Method::CloughTocher) &&
          evaluation.tessellation == 0;
 }
 
@@ -210,7 +197,7 @@ std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& s
   const int key = piecesKey(settings.method, settings.cloughTocher);
   const bool built = deferredFor_ == key && (!settings.splitLines || splitFor_ == key);
   if (built || hasShownImage() || settings.repairTVertices != repairedDrawn_ || settings.tessellation != 0 ||
-      !flatSurface || (settings.method != ShadingMethod::C1Quadratic && settings.method != ShadingMethod::CloughTocher))
+      !flatSurface || (settings.method != Method::C1Quadratic && settings.method != Method::CloughTocher))
     return {};
   return [mesh = mesh_, topology = topology_, method = settings.method, variant = settings.cloughTocher] {
     return prepareDeferred(mesh, topology, method, variant);
@@ -255,7 +242,7 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
   return evaluation;
 }
 
-void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
+void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
                                  const glm::mat4& clipFromWorld, int width, int height, bool comparison) {
   GLint framebuffer = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
@@ -268,15 +255,15 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
   // Push surfaces back a little so edge overlays drawn at the same depth win.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  if (method == ShadingMethod::Flat || method == ShadingMethod::Gouraud) {
+  if (method == Method::Flat || method == Method::Gouraud) {
     meshProgram_.set("clipFromWorld", clipFromWorld);
     meshProgram_.set("method", static_cast<int>(method));
     meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
     meshProgram_.use();
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
-  } else if (method == ShadingMethod::ScanlineGouraud || method == ShadingMethod::Bilinear) {
-    drawPolygons(method == ShadingMethod::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
+  } else if (method == Method::ScanlineGouraud || method == Method::Bilinear) {
+    drawPolygons(method == Method::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
                  height);
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
     // The comparison shares the method's pieces when it is the same method per pixel.
@@ -289,7 +276,7 @@ void MeshRenderer::drawRadiosity(ShadingMethod method, const RenderSettings& set
     BezierEvaluation evaluation = bezierEvaluation(settings, camera);
     // Serendipity quads are exact per pixel in the polygon pass; the radiosity surface draws
     // them from their (linear) pieces, which it can lift.
-    const bool serendipityPass = method == ShadingMethod::Quadratic && evaluation.surfaceHeight == 0.0;
+    const bool serendipityPass = method == Method::Quadratic && evaluation.surfaceHeight == 0.0;
     if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
     pass.draw(clipFromWorld, evaluation);
     statistics_ = pass.statistics();
@@ -342,7 +329,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   // A shown image needs only the surfaces' depth from pass 1: the cheapest method draws it,
   // on the flat surfaces the image was made of.
   if (hasShownImage()) {
-    settings.method = ShadingMethod::Flat;
+    settings.method = Method::Flat;
     settings.surfaceHeight = 0.0;
   }
   const bool compareMethod =
@@ -353,7 +340,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     throw Error("difference view: no reference image to compare with (give one with --reference)");
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
-  if (settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic) {
+  if (settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces) {
     const double lift = settings.surfaceHeight * mesh_->bounds().diagonal();
     camera.zFar += lift;
     camera.zNear = std::max(camera.zNear - lift, camera.zFar * 1e-4);
@@ -363,13 +350,13 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   targets_.resize(width, height);
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
-  if (settings.method >= ShadingMethod::Quadratic)
+  if (methodInfo(settings.method).bezierPieces)
     uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
   // The comparison is drawn per pixel: deferred for the C1 methods, by its own Bezier pass for
   // the quadratic one.
   const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
   const bool comparisonDeferred = isDeferred(settings.comparisonMethod, BezierEvaluation{});
-  if (compareMethod && settings.comparisonMethod >= ShadingMethod::Quadratic &&
+  if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces &&
       (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     if (comparisonDeferred) {
@@ -382,7 +369,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
       comparisonPatchesFor_ = comparisonKey;
     }
   }
-  const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && settings.method >= ShadingMethod::Quadratic;
+  const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces;
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
   const bool timing = frame_ >= 2;
   if (timing) {
@@ -459,7 +446,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     glDrawArrays(GL_LINES, 0, edgeVertices_);
     glDepthMask(GL_TRUE);
   }
-  const bool bezierMethod = settings.method >= ShadingMethod::Quadratic;
+  const bool bezierMethod = methodInfo(settings.method).bezierPieces;
   if (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet)) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);

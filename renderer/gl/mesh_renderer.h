@@ -25,20 +25,6 @@
 
 namespace radview::gl {
 
-enum class ShadingMethod : int {
-  Flat,
-  Gouraud,          // the hardware's interpolation on the element's triangles
-  ScanlineGouraud,  // down the polygon's edges, then across the scanline (view dependent)
-  Bilinear,
-  Quadratic,
-  C1Quadratic,
-  CloughTocher,
-};
-// "flat", "gouraud", "scanline-gouraud", "bilinear", "quadratic", "c1-quadratic",
-// "clough-tocher" (by enum value)
-const std::vector<std::string>& shadingMethodNames();
-ShadingMethod shadingMethodFromName(const std::string& name);  // throws Error
-
 // What the display shows of the linear radiosity.
 enum class DisplayView : int {
   Normal,             // exposure and sRGB
@@ -52,7 +38,7 @@ const std::vector<std::string>& displayViewNames();
 DisplayView displayViewFromName(const std::string& name);  // throws Error
 
 struct RenderSettings {
-  ShadingMethod method = ShadingMethod::Gouraud;
+  Method method = Method::Gouraud;
   bool perspectiveCorrect = true;  // Gouraud: false interpolates linearly in screen space
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
   // Quadratic and C1 methods: 0 exact per pixel, 1..64 tessellated at that level,
@@ -69,7 +55,7 @@ struct RenderSettings {
   // in display units.
   enum class Comparison : int { Method, Image };
   Comparison comparison = Comparison::Method;
-  ShadingMethod comparisonMethod = ShadingMethod::CloughTocher;
+  Method comparisonMethod = Method::CloughTocher;
   double differenceScale = 4.0 / 255.0;
   bool elementEdges = false;
   bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
@@ -169,10 +155,10 @@ class MeshRenderer {
   void uploadSplit(const std::vector<glm::vec3>& split, int key);  // the split lines of the pieces `key`, or none
   // Whether `method` is drawn by the deferred pass with this evaluation: the C1 methods per
   // pixel, on the flat surface.
-  static bool isDeferred(ShadingMethod method, const BezierEvaluation& evaluation);
+  static bool isDeferred(Method method, const BezierEvaluation& evaluation);
   // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth;
   // `comparison` when it is the difference view's comparison.
-  void drawRadiosity(ShadingMethod method, const RenderSettings& settings, const Camera& camera,
+  void drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
                      const glm::mat4& clipFromWorld, int width, int height, bool comparison);
   // The comparison method's pieces, when it is a Bezier method (its own pass: switching
   // between the two every frame would rebuild them every frame).

@@ -8,11 +8,11 @@
 namespace radview::gl {
 
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
-                                        ShadingMethod method, CloughTocherVariant variant, std::vector<glm::vec3>* split) {
-  if (method == ShadingMethod::Quadratic) return quadraticLagrangeVertices(mesh, *topology);  // its serendipity quads last
+                                        Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split) {
+  if (method == Method::Quadratic) return quadraticLagrangeVertices(mesh, *topology);  // its serendipity quads last
   const SurfaceTriangulation surface(mesh, topology);
   const CornerGradients gradients = vertexGradients(surface, true);
-  if (method == ShadingMethod::CloughTocher) {
+  if (method == Method::CloughTocher) {
     const auto patches = buildCloughTocherPatches(surface, gradients, variant);
     if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
     return cloughTocherVertices(patches);
@@ -41,21 +41,21 @@ void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t spli
 }  // namespace
 
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
-                              ShadingMethod method, CloughTocherVariant variant) {
+                              Method method, CloughTocherVariant variant) {
   DeferredSetup setup;
   setup.mesh = std::move(mesh);
   setup.method = method;
   setup.variant = variant;
   setup.surface = std::make_unique<const SurfaceTriangulation>(*setup.mesh, std::move(topology));
   setup.gradients = vertexGradients(*setup.surface, true);
-  if (method == ShadingMethod::C1Quadratic) setup.incenters = triangleIncenters(*setup.surface);
+  if (method == Method::C1Quadratic) setup.incenters = triangleIncenters(*setup.surface);
   return setup;
 }
 
 void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<glm::vec3>* split) {
   const SurfaceTriangulation& surface = *setup.surface;
   const size_t triangles = surface.triangles().size();
-  if (setup.method == ShadingMethod::CloughTocher) {
+  if (setup.method == Method::CloughTocher) {
     streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
                   [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
   } else {

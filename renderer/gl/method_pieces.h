@@ -21,21 +21,21 @@ namespace radview::gl {
 // elements into them (none for quadratic elements).
 // `topology` is the mesh's own, shared with the triangulation the pieces are built on.
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
-                                        ShadingMethod method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
+                                        Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
 
 // What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients
 // (and for Powell-Sabin the triangles' incentres). It needs no OpenGL, so that the viewer can
 // make it beside its frame loop; it keeps the mesh it was made from.
 struct DeferredSetup {
   std::shared_ptr<const RadiosityMesh> mesh;
-  ShadingMethod method = ShadingMethod::CloughTocher;
+  Method method = Method::CloughTocher;
   CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
   std::unique_ptr<const SurfaceTriangulation> surface;
   CornerGradients gradients;
   std::vector<Vec3> incenters;  // Powell-Sabin only
 };
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
-                              ShadingMethod method, CloughTocherVariant variant);
+                              Method method, CloughTocherVariant variant);
 
 // A C1 method's pieces, straight into the deferred pass: each patch built on every core a block
 // of triangles at a time and never kept; its split lines into `split` when given.

@@ -10,19 +10,6 @@ std::ostream& operator<<(std::ostream& os, const Sample& s) {
   return os << "B " << s.B << " grad " << s.gradient[0] << ' ' << s.gradient[1] << ' ' << s.gradient[2];
 }
 
-const std::vector<std::string>& methodNames() {
-  static const std::vector<std::string> names = {"flat",      "linear",       "bilinear",
-                                                 "quadratic", "c1-quadratic", "clough-tocher"};
-  return names;
-}
-
-Method methodFromName(const std::string& name) {
-  const auto& names = methodNames();
-  for (size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<Method>(i);
-  throw Error("unknown interpolation method '" + name + "' (expected one of " + joined(names) + ")");
-}
-
 CloughTocherVariant cloughTocherVariantFromName(const std::string& name) {
   if (name == "affine") return CloughTocherVariant::AffineInvariant;
   if (name == "book") return CloughTocherVariant::Book;
@@ -33,7 +20,12 @@ std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method m
                                              const InterpolantOptions& options) {
   switch (method) {
     case Method::Flat: return makeFlat(mesh);
-    case Method::Linear: return makeLinear(mesh, options.diagonal);
+    case Method::Gouraud: return makeLinear(mesh, options.diagonal);
+    case Method::ScanlineGouraud:
+      if (!options.view)
+        throw Error("scanline-gouraud depends on where the mesh is on the screen: it needs a view (camera and "
+                    "image size)");
+      return makeScanlineGouraud(mesh, *options.view);
     case Method::Bilinear: return makeBilinear(mesh);
     case Method::Quadratic: return makeQuadraticLagrange(mesh);
     case Method::C1Quadratic: return makePowellSabin(mesh, options);

@@ -2,10 +2,14 @@
 // Reconstruction of the radiosity function B(x) from nodal values (C&W §9.2): one interface
 // for every method, built once from a mesh, evaluated at points of an element. This is the
 // CPU reference the GPU paths are checked against, so it works in double precision.
+#include "interp/method_registry.h"
 #include "mesh/radiosity_mesh.h"
+
+#include <glm/mat4x4.hpp>
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -21,18 +25,7 @@ struct Sample {
 
 std::ostream& operator<<(std::ostream& os, const Sample& s);
 
-enum class Method {
-  Flat,          // the element's mean nodal value
-  Linear,        // barycentric on a triangulation of each element (for quads: one diagonal)
-  Bilinear,      // quads in their bilinear parameter space (orientation invariant)
-  Quadratic,     // Lagrange on quadratic elements (vertex and mid-edge nodes), C0
-  C1Quadratic,   // Powell-Sabin split, quadratic Bezier pieces (Reichert), C1
-  CloughTocher,  // three cubic Bezier pieces per triangle (C&W §9.2.2), C1 with relaxations
-};
-const std::vector<std::string>& methodNames();  // "flat", "linear", ... in enum order
-Method methodFromName(const std::string& name);  // throws Error
-
-// Which diagonal cuts a quad for Method::Linear: corners 0-2 (what radview's GPU Gouraud path
+// Which diagonal cuts a quad for Method::Gouraud: corners 0-2 (what radview's GPU Gouraud path
 // draws) or 1-3. Fig. 9.7: the two give different pictures from the same data.
 enum class QuadDiagonal { D02, D13 };
 
@@ -45,8 +38,17 @@ enum class CloughTocherVariant {
 // "affine", "book". Throws Error.
 CloughTocherVariant cloughTocherVariantFromName(const std::string& name);
 
+// Where the mesh is seen from, for a method whose value depends on it (Method::ScanlineGouraud):
+// the clip-from-world matrix and the viewport in pixels of the image it is drawn in, as
+// Camera::clipFromWorld(width / height) and {width, height}.
+struct ScreenView {
+  glm::dmat4 clipFromWorld{1.0};
+  Vec2 viewport{1.0};
+};
+
 struct InterpolantOptions {
   QuadDiagonal diagonal = QuadDiagonal::D02;
+  std::optional<ScreenView> view;  // required by view-dependent methods, ignored by the others
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
   // Use the gradients stored in the mesh when it has them (else they are estimated).
   bool useStoredGradients = true;

@@ -8,6 +8,7 @@ namespace radview {
 
 std::unique_ptr<Interpolant> makeFlat(const RadiosityMesh& mesh);
 std::unique_ptr<Interpolant> makeLinear(const RadiosityMesh& mesh, QuadDiagonal diagonal);
+std::unique_ptr<Interpolant> makeScanlineGouraud(const RadiosityMesh& mesh, const ScreenView& view);
 std::unique_ptr<Interpolant> makeBilinear(const RadiosityMesh& mesh);
 std::unique_ptr<Interpolant> makeQuadraticLagrange(const RadiosityMesh& mesh);
 std::unique_ptr<Interpolant> makePowellSabin(const RadiosityMesh& mesh, const InterpolantOptions& options);

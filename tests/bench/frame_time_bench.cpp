@@ -32,7 +32,7 @@ Fixture& fixture() {
   return f;
 }
 
-void frame(benchmark::State& state, ShadingMethod method, int tessellation) {
+void frame(benchmark::State& state, Method method, int tessellation) {
   Fixture& f = fixture();
   RenderSettings settings;
   settings.method = method;
@@ -48,12 +48,12 @@ void frame(benchmark::State& state, ShadingMethod method, int tessellation) {
 }
 
 void registerAll() {
-  for (ShadingMethod m : {ShadingMethod::Flat, ShadingMethod::Gouraud, ShadingMethod::ScanlineGouraud,
-                          ShadingMethod::Bilinear})
-    benchmark::RegisterBenchmark(shadingMethodNames()[int(m)].c_str(), frame, m, 0)->Unit(benchmark::kMillisecond);
-  for (ShadingMethod m : {ShadingMethod::Quadratic, ShadingMethod::C1Quadratic, ShadingMethod::CloughTocher})
+  for (Method m : {Method::Flat, Method::Gouraud, Method::ScanlineGouraud,
+                          Method::Bilinear})
+    benchmark::RegisterBenchmark(methodName(m).c_str(), frame, m, 0)->Unit(benchmark::kMillisecond);
+  for (Method m : {Method::Quadratic, Method::C1Quadratic, Method::CloughTocher})
     for (int level : {0, 1, 4, 16, kAdaptiveTessellation}) {
-      const std::string name = shadingMethodNames()[int(m)] + "/" +
+      const std::string name = methodName(m) + "/" +
                                (level == 0 ? std::string("per-pixel")
                                            : level < 0 ? std::string("adaptive") : "level-" + std::to_string(level));
       benchmark::RegisterBenchmark(name.c_str(), frame, m, level)->Unit(benchmark::kMillisecond)->MinTime(0.5);

@@ -44,7 +44,7 @@ double residentMb() {
 
 struct Variant {
   const char* name;
-  ShadingMethod method;
+  Method method;
   int tessellation;
 };
 
@@ -63,13 +63,13 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
   const Camera camera = cameraFromSpec("file", mesh.bounds(), file.scene.cameras);
   std::vector<Variant> variants;
   // Gouraud first, always: the others are measured against it.
-  for (const Variant& v : std::vector<Variant>{{"gouraud", ShadingMethod::Gouraud, 0},
-                                               {"flat", ShadingMethod::Flat, 0},
-                                               {"scanline-gouraud", ShadingMethod::ScanlineGouraud, 0},
-                                               {"bilinear", ShadingMethod::Bilinear, 0},
-                                               {"quadratic", ShadingMethod::Quadratic, 0},
-                                               {"c1-quadratic", ShadingMethod::C1Quadratic, 0},
-                                               {"clough-tocher", ShadingMethod::CloughTocher, 0}})
+  for (const Variant& v : std::vector<Variant>{{"gouraud", Method::Gouraud, 0},
+                                               {"flat", Method::Flat, 0},
+                                               {"scanline-gouraud", Method::ScanlineGouraud, 0},
+                                               {"bilinear", Method::Bilinear, 0},
+                                               {"quadratic", Method::Quadratic, 0},
+                                               {"c1-quadratic", Method::C1Quadratic, 0},
+                                               {"clough-tocher", Method::CloughTocher, 0}})
     if (variants.empty() || only.empty() || ("," + only + ",").find("," + std::string(v.name) + ",") != std::string::npos)
       variants.push_back(v);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.

@@ -1,5 +1,6 @@
 #include "tests/fuzz/fuzz_inputs.h"
 
+#include "core/camera.h"
 #include "core/error.h"
 #include "interp/interpolant.h"
 #include "interp/t_vertex_repair.h"
@@ -66,12 +67,16 @@ void exerciseMesh(const RadiosityMesh& mesh) {
   const MeshTopology topology(mesh);
   const DisplayMesh display = buildDisplayMesh(mesh, topology);
   const RadiosityMesh repaired = repairTVertices(mesh);
-  for (size_t m = 0; m < methodNames().size(); ++m) {
-    const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, Method(m));
+  // The view-dependent methods seen from the front preset, 64x64 pixels.
+  InterpolantOptions options;
+  const Camera camera = cameraFromSpec("front", mesh.bounds(), {});
+  options.view = ScreenView{camera.clipFromWorld(1.0), Vec2(64.0)};
+  for (const MethodInfo& method : methodRegistry()) {
+    const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method.method, options);
     for (size_t e = 0; e < mesh.elements.size(); ++e) {
       const Sample s = interpolant->evaluate(uint32_t(e), cornerMean(mesh, e));
       if (!finite(s)) {
-        std::fprintf(stderr, "fuzz: %s interpolant is not finite at element %zu\n", methodNames()[m].c_str(), e);
+        std::fprintf(stderr, "fuzz: %s interpolant is not finite at element %zu\n", method.name.c_str(), e);
         std::abort();
       }
     }

@@ -26,7 +26,7 @@ RadiosityMesh discontinuities() {
   return loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/discontinuities.gltf").mesh;
 }
 
-void expectSetUpOnAnotherThreadDrawsTheSame(ShadingMethod method) {
+void expectSetUpOnAnotherThreadDrawsTheSame(Method method) {
   EglContext context;
   RenderSettings settings;
   settings.method = method;
@@ -59,11 +59,11 @@ void expectSetUpOnAnotherThreadDrawsTheSame(ShadingMethod method) {
 }
 
 TEST(BackgroundPieces, CloughTocherSetUpOnAnotherThreadDrawsTheSame) {
-  expectSetUpOnAnotherThreadDrawsTheSame(ShadingMethod::CloughTocher);
+  expectSetUpOnAnotherThreadDrawsTheSame(Method::CloughTocher);
 }
 
 TEST(BackgroundPieces, PowellSabinSetUpOnAnotherThreadDrawsTheSame) {
-  expectSetUpOnAnotherThreadDrawsTheSame(ShadingMethod::C1Quadratic);
+  expectSetUpOnAnotherThreadDrawsTheSame(Method::C1Quadratic);
 }
 
 // Only what render() would build now is offered: nothing for the methods without pieces, the
@@ -73,11 +73,11 @@ TEST(BackgroundPieces, OnlyWhatRenderWouldBuildIsOfferedAndStaleSetUpsAreDropped
   MeshRenderer renderer;
   renderer.setMesh(discontinuities());
   RenderSettings settings;
-  for (ShadingMethod m : {ShadingMethod::Flat, ShadingMethod::Gouraud, ShadingMethod::Bilinear, ShadingMethod::Quadratic}) {
+  for (Method m : {Method::Flat, Method::Gouraud, Method::Bilinear, Method::Quadratic}) {
     settings.method = m;
     EXPECT_FALSE(renderer.piecesSetup(settings)) << int(m);
   }
-  settings.method = ShadingMethod::CloughTocher;
+  settings.method = Method::CloughTocher;
   settings.tessellation = 4;
   EXPECT_FALSE(renderer.piecesSetup(settings));
   settings.tessellation = 0;
@@ -86,7 +86,7 @@ TEST(BackgroundPieces, OnlyWhatRenderWouldBuildIsOfferedAndStaleSetUpsAreDropped
   settings.view = DisplayView::Difference;  // which draws the flat surface
   EXPECT_TRUE(renderer.piecesSetup(settings));
   settings = RenderSettings();
-  settings.method = ShadingMethod::CloughTocher;
+  settings.method = Method::CloughTocher;
 
   const DeferredSetup stale = renderer.piecesSetup(settings)();
   renderer.setMesh(discontinuities());

@@ -13,7 +13,7 @@
 namespace radview::gl {
 namespace {
 
-test::PixelComparison compare(ShadingMethod gpuMethod, Method cpuMethod, CloughTocherVariant variant,
+test::PixelComparison compare(Method gpuMethod, Method cpuMethod, CloughTocherVariant variant,
                               double tolerance) {
   EglContext context;
   MeshRenderer renderer;
@@ -38,7 +38,7 @@ test::PixelComparison compare(ShadingMethod gpuMethod, Method cpuMethod, CloughT
 // centre lies within round-off of an element edge may be drawn by the piece on the other side
 // of it than the CPU picks: across the C-1 edge that differs by the step (0.3), so a handful
 // of such pixels is allowed, and nothing may be further off than the step.
-void expectAgreement(ShadingMethod gpu, Method cpu, CloughTocherVariant variant) {
+void expectAgreement(Method gpu, Method cpu, CloughTocherVariant variant) {
   const test::PixelComparison c = compare(gpu, cpu, variant, 1e-5);
   EXPECT_GT(c.pixels, 5000u);
   EXPECT_GE(c.withinTolerance, c.pixels - c.pixels / 200) << c.withinTolerance << " of " << c.pixels;
@@ -46,20 +46,20 @@ void expectAgreement(ShadingMethod gpu, Method cpu, CloughTocherVariant variant)
 }
 
 TEST(C1Gpu, CloughTocherAffinePerPixelIsTheCpuReference) {
-  expectAgreement(ShadingMethod::CloughTocher, Method::CloughTocher, CloughTocherVariant::AffineInvariant);
+  expectAgreement(Method::CloughTocher, Method::CloughTocher, CloughTocherVariant::AffineInvariant);
 }
 
 TEST(C1Gpu, CloughTocherBookPerPixelIsTheCpuReference) {
-  expectAgreement(ShadingMethod::CloughTocher, Method::CloughTocher, CloughTocherVariant::Book);
+  expectAgreement(Method::CloughTocher, Method::CloughTocher, CloughTocherVariant::Book);
 }
 
 TEST(C1Gpu, PowellSabinPerPixelIsTheCpuReference) {
-  expectAgreement(ShadingMethod::C1Quadratic, Method::C1Quadratic, CloughTocherVariant::AffineInvariant);
+  expectAgreement(Method::C1Quadratic, Method::C1Quadratic, CloughTocherVariant::AffineInvariant);
 }
 
 TEST(C1Gpu, ComparisonDiscriminates) {
   // The same check between different methods fails: it is not vacuous.
-  const test::PixelComparison c = compare(ShadingMethod::Gouraud, Method::CloughTocher, CloughTocherVariant::AffineInvariant, 1e-5);
+  const test::PixelComparison c = compare(Method::Gouraud, Method::CloughTocher, CloughTocherVariant::AffineInvariant, 1e-5);
   EXPECT_LT(c.withinTolerance, c.pixels / 2);
 }
 

@@ -24,14 +24,14 @@ class DifferenceViewTest : public ::testing::Test {
     camera.zNear = 0.1;
     camera.zFar = 10.0;
   }
-  LinearImage renderLinear(ShadingMethod method, int tessellation = 0) {
+  LinearImage renderLinear(Method method, int tessellation = 0) {
     RenderSettings s;
     s.method = method;
     s.tessellation = tessellation;
     renderer.render(camera, s, kSize, kSize);
     return renderer.readLinear();
   }
-  RenderSettings difference(ShadingMethod method, ShadingMethod against, int tessellation = 0) {
+  RenderSettings difference(Method method, Method against, int tessellation = 0) {
     RenderSettings s;
     s.method = method;
     s.tessellation = tessellation;
@@ -48,8 +48,8 @@ class DifferenceViewTest : public ::testing::Test {
 
 // The comparison is the other method exactly per pixel, whatever the shown method's level.
 TEST_F(DifferenceViewTest, ComparesWithTheOtherMethodPerPixel) {
-  const LinearImage exact = renderLinear(ShadingMethod::CloughTocher);
-  renderer.render(camera, difference(ShadingMethod::CloughTocher, ShadingMethod::CloughTocher, 2), kSize, kSize);
+  const LinearImage exact = renderLinear(Method::CloughTocher);
+  renderer.render(camera, difference(Method::CloughTocher, Method::CloughTocher, 2), kSize, kSize);
   const ReferenceImage comparison = renderer.readComparison();
   EXPECT_TRUE(comparison.linear);
   EXPECT_EQ(comparison.pixels.rgba, exact.rgba);
@@ -62,7 +62,7 @@ TEST_F(DifferenceViewTest, ComparesWithTheOtherMethodPerPixel) {
 
 // A method minus itself is zero everywhere: white on the scale, background off the surface.
 TEST_F(DifferenceViewTest, AMethodMinusItselfIsWhite) {
-  renderer.render(camera, difference(ShadingMethod::C1Quadratic, ShadingMethod::C1Quadratic), kSize, kSize);
+  renderer.render(camera, difference(Method::C1Quadratic, Method::C1Quadratic), kSize, kSize);
   const DisplayDifference d = displayDifference(renderer.readLinear(), renderer.readComparison(), 1.0);
   EXPECT_EQ(d.maxAbs, 0.0);
   const Image display = renderer.readDisplay();
@@ -74,12 +74,12 @@ TEST_F(DifferenceViewTest, AMethodMinusItselfIsWhite) {
 
 // A float reference image is the same comparison as the method it was rendered with.
 TEST_F(DifferenceViewTest, ALinearReferenceImageMatchesTheMethodItCameFrom) {
-  renderer.setReferenceImage(ReferenceImage{renderLinear(ShadingMethod::CloughTocher), true, "ct"});
-  RenderSettings againstImage = difference(ShadingMethod::Gouraud, ShadingMethod::Gouraud);
+  renderer.setReferenceImage(ReferenceImage{renderLinear(Method::CloughTocher), true, "ct"});
+  RenderSettings againstImage = difference(Method::Gouraud, Method::Gouraud);
   againstImage.comparison = RenderSettings::Comparison::Image;
   renderer.render(camera, againstImage, kSize, kSize);
   const DisplayDifference image = displayDifference(renderer.readLinear(), renderer.readComparison(), 1.0);
-  renderer.render(camera, difference(ShadingMethod::Gouraud, ShadingMethod::CloughTocher), kSize, kSize);
+  renderer.render(camera, difference(Method::Gouraud, Method::CloughTocher), kSize, kSize);
   const DisplayDifference method = displayDifference(renderer.readLinear(), renderer.readComparison(), 1.0);
   EXPECT_GT(image.rmse, 0.0);
   EXPECT_EQ(image.pixels, method.pixels);
@@ -89,11 +89,11 @@ TEST_F(DifferenceViewTest, ALinearReferenceImageMatchesTheMethodItCameFrom) {
 
 // Brighter than the comparison is red, darker blue.
 TEST_F(DifferenceViewTest, BrighterIsRedDarkerIsBlue) {
-  LinearImage reference = renderLinear(ShadingMethod::Gouraud);
+  LinearImage reference = renderLinear(Method::Gouraud);
   for (size_t i = 0; i < reference.rgba.size(); ++i)
     if (i % 4 != 3) reference.rgba[i] *= 0.8f;
   renderer.setReferenceImage(ReferenceImage{reference, true, "darker"});
-  RenderSettings s = difference(ShadingMethod::Gouraud, ShadingMethod::Gouraud);
+  RenderSettings s = difference(Method::Gouraud, Method::Gouraud);
   s.comparison = RenderSettings::Comparison::Image;
   renderer.render(camera, s, kSize, kSize);
   const Image brighter = renderer.readDisplay();
@@ -109,7 +109,7 @@ TEST_F(DifferenceViewTest, BrighterIsRedDarkerIsBlue) {
 }
 
 TEST_F(DifferenceViewTest, WithoutAReferenceImageIsAnError) {
-  RenderSettings s = difference(ShadingMethod::Gouraud, ShadingMethod::Gouraud);
+  RenderSettings s = difference(Method::Gouraud, Method::Gouraud);
   s.comparison = RenderSettings::Comparison::Image;
   EXPECT_THROW(renderer.render(camera, s, kSize, kSize), Error);
 }

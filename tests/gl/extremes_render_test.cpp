@@ -39,10 +39,10 @@ using test::Placement;
 
 struct MethodConfig {
   std::string name;
-  ShadingMethod method;
+  Method method;
   int tessellation = 0;  // 0 per pixel, 1..64 a level, kAdaptiveTessellation
   bool perspectiveCorrect = true;
-  bool convex() const { return method <= ShadingMethod::Quadratic; }  // stays inside the nodal range here
+  bool convex() const { return method <= Method::Quadratic; }  // stays inside the nodal range here
 };
 
 // Under the sanitizers llvmpipe's tessellation runs 30 to 60 times slower than in Release (a
@@ -58,13 +58,13 @@ constexpr bool kTessellateFirstViewOnly = false;
 // Every method of C&W §9.2 as the renderer draws it: per pixel ("exact"), tessellated at level 4
 // and adaptive.
 std::vector<MethodConfig> everyMethod() {
-  std::vector<MethodConfig> configs = {{"flat", ShadingMethod::Flat},
-                                       {"gouraud", ShadingMethod::Gouraud},
-                                       {"gouraud screen-space", ShadingMethod::Gouraud, 0, false},
-                                       {"scanline-gouraud", ShadingMethod::ScanlineGouraud},
-                                       {"bilinear", ShadingMethod::Bilinear}};
-  for (ShadingMethod m : {ShadingMethod::Quadratic, ShadingMethod::C1Quadratic, ShadingMethod::CloughTocher}) {
-    const std::string name = shadingMethodNames()[size_t(m)];
+  std::vector<MethodConfig> configs = {{"flat", Method::Flat},
+                                       {"gouraud", Method::Gouraud},
+                                       {"gouraud screen-space", Method::Gouraud, 0, false},
+                                       {"scanline-gouraud", Method::ScanlineGouraud},
+                                       {"bilinear", Method::Bilinear}};
+  for (Method m : {Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
+    const std::string name = methodName(m);
     configs.push_back({name + " exact", m, 0});
     configs.push_back({name + " level 4", m, 4});
     configs.push_back({name + " adaptive", m, kAdaptiveTessellation});
@@ -199,11 +199,11 @@ TEST_F(ExtremesRender, EveryViewAtBothEndsOfTheDynamicRangeShowsNoGarbage) {
   for (const double exposure : {std::log2(0.18 / 1e-8), 0.0, std::log2(0.18 / 1e8)}) {
     const Camera camera = exposure > 0 ? extremeCamera(placement, Vec3(0.75), Vec3(0.0), {0, 1, 0}, 100.0)
                                        : extremeCamera(placement, Vec3(0.25), Vec3(1.0), {0, 1, 0}, 100.0);
-    renderer.render(camera, settingsFor({"gouraud", ShadingMethod::Gouraud}), width, height);
+    renderer.render(camera, settingsFor({"gouraud", Method::Gouraud}), width, height);
     renderer.setReferenceImage(ReferenceImage{renderer.readLinear(), true, "gouraud"});
-    for (const MethodConfig& config : {MethodConfig{"gouraud", ShadingMethod::Gouraud},
-                                       MethodConfig{"clough-tocher exact", ShadingMethod::CloughTocher},
-                                       MethodConfig{"c1-quadratic adaptive", ShadingMethod::C1Quadratic,
+    for (const MethodConfig& config : {MethodConfig{"gouraud", Method::Gouraud},
+                                       MethodConfig{"clough-tocher exact", Method::CloughTocher},
+                                       MethodConfig{"c1-quadratic adaptive", Method::C1Quadratic,
                                                     kAdaptiveTessellation}})
       for (DisplayView view : {DisplayView::Normal, DisplayView::Value, DisplayView::GradientMagnitude,
                                DisplayView::Isolines, DisplayView::Difference})
@@ -253,8 +253,8 @@ double localScale(const LinearImage& image, int x, int y) {
 TEST_F(ExtremesRender, EveryPlacementShowsTheUnitBoxPicture) {
   const auto& placements = extremePlacements();
   for (const MethodConfig& config :
-       {MethodConfig{"gouraud", ShadingMethod::Gouraud}, MethodConfig{"c1-quadratic exact", ShadingMethod::C1Quadratic},
-        MethodConfig{"clough-tocher exact", ShadingMethod::CloughTocher}}) {
+       {MethodConfig{"gouraud", Method::Gouraud}, MethodConfig{"c1-quadratic exact", Method::C1Quadratic},
+        MethodConfig{"clough-tocher exact", Method::CloughTocher}}) {
     LinearImage unit;
     for (const Placement& placement : placements) {
       renderer.setMesh(extremeBox(placement));

@@ -32,7 +32,7 @@ class Fig914Test : public ::testing::Test {
     fitClipPlanes(camera, mesh.bounds());
     stencils = edgeStencils(mesh, visibleElements(mesh, camera, kSize, kSize), kSize, kSize);
   }
-  LinearImage render(const RadiosityMesh& m, ShadingMethod method) {
+  LinearImage render(const RadiosityMesh& m, Method method) {
     renderer.setMesh(m);
     RenderSettings s;
     s.method = method;
@@ -65,9 +65,9 @@ class Fig914Test : public ::testing::Test {
 
 TEST_F(Fig914Test, C1MethodsRemoveTheMachBandsOfLinearAtElementEdges) {
   ASSERT_GT(stencils.smooth.size(), 1000u);
-  const double linear = meanGradientJump(render(mesh, ShadingMethod::Gouraud), 1.0, stencils.smooth);
-  const double quadratic = meanGradientJump(render(unrelaxed, ShadingMethod::C1Quadratic), 1.0, stencils.smooth);
-  const double cloughTocher = meanGradientJump(render(mesh, ShadingMethod::CloughTocher), 1.0, stencils.smooth);
+  const double linear = meanGradientJump(render(mesh, Method::Gouraud), 1.0, stencils.smooth);
+  const double quadratic = meanGradientJump(render(unrelaxed, Method::C1Quadratic), 1.0, stencils.smooth);
+  const double cloughTocher = meanGradientJump(render(mesh, Method::CloughTocher), 1.0, stencils.smooth);
   std::printf("Mach bands (mean gradient jump across untagged edges, steps/px): linear %.3f, C1 quadratic %.3f, "
               "Clough-Tocher %.3f\n", linear, quadratic, cloughTocher);
   EXPECT_LT(quadratic, 0.25 * linear);
@@ -84,8 +84,8 @@ TEST_F(Fig914Test, C1QuadraticSmoothsTheRealShadowKinksWhichRelaxedCloughTocherK
   reference.addPasses(256);
   const double real = meanGradientJump(reference.image(), 1.0, stencils.c0);
   const double noise = meanGradientJump(reference.image(), 1.0, stencils.smooth);
-  const double quadratic = meanGradientJump(render(unrelaxed, ShadingMethod::C1Quadratic), 1.0, stencils.c0);
-  const double cloughTocher = meanGradientJump(render(mesh, ShadingMethod::CloughTocher), 1.0, stencils.c0);
+  const double quadratic = meanGradientJump(render(unrelaxed, Method::C1Quadratic), 1.0, stencils.c0);
+  const double cloughTocher = meanGradientJump(render(mesh, Method::CloughTocher), 1.0, stencils.c0);
   std::printf("gradient jump across C0 shadow edges (steps/px): reference %.3f (its noise floor %.3f), C1 quadratic "
               "%.3f, relaxed Clough-Tocher %.3f\n", real, noise, quadratic, cloughTocher);
   EXPECT_GT(real, noise + 0.2);  // the reference has a kink there beyond its noise
@@ -95,9 +95,9 @@ TEST_F(Fig914Test, C1QuadraticSmoothsTheRealShadowKinksWhichRelaxedCloughTocherK
 
 TEST_F(Fig914Test, C1QuadraticOvershootsNearTheDiscontinuities) {
   const std::vector<int32_t> elementAt = visibleElements(mesh, camera, kSize, kSize);
-  const double linear = overshoot(render(mesh, ShadingMethod::Gouraud), elementAt, mesh);
-  const double quadratic = overshoot(render(unrelaxed, ShadingMethod::C1Quadratic), elementAt, mesh);
-  const double cloughTocher = overshoot(render(mesh, ShadingMethod::CloughTocher), elementAt, mesh);
+  const double linear = overshoot(render(mesh, Method::Gouraud), elementAt, mesh);
+  const double quadratic = overshoot(render(unrelaxed, Method::C1Quadratic), elementAt, mesh);
+  const double cloughTocher = overshoot(render(mesh, Method::CloughTocher), elementAt, mesh);
   std::printf("largest rise above an element's own nodes (fraction of the brightest node): linear %.4f, C1 quadratic "
               "%.4f, relaxed Clough-Tocher %.4f\n", linear, quadratic, cloughTocher);
   // The book's claim for (b) holds: it rises above its nodes (2.6 % measured), where linear

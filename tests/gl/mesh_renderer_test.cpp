@@ -174,7 +174,7 @@ TEST_F(MeshRendererTest, ScreenSpaceGouraudInterpolatesInTheImageAndDiffersFromP
 TEST_F(MeshRendererTest, FlatShadingShowsTheElementMean) {
   renderer.setMesh(mesh);
   RenderSettings settings;
-  settings.method = ShadingMethod::Flat;
+  settings.method = Method::Flat;
   renderer.render(camera, settings, width, height);
   int checked = 0;
   const Rgb mean = mesh.meanB(0);
@@ -313,12 +313,6 @@ TEST(ShaderProgram, BrokenShaderNamesTheFile) {
     EXPECT_EQ(what.rfind((dir / "lines.vert").string() + ": does not compile: ", 0), 0u) << what;
     EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
-}
-
-TEST(ShadingMethod, NamesRoundTripAndUnknownIsAnError) {
-  for (const std::string& name : shadingMethodNames())
-    EXPECT_EQ(shadingMethodNames()[static_cast<int>(shadingMethodFromName(name))], name);
-  EXPECT_THROW(shadingMethodFromName("phong"), Error);
 }
 
 }  // namespace

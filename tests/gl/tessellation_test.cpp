@@ -27,7 +27,7 @@ struct Renders {
   TessellationStatistics statistics;
 };
 
-Renders renderBoth(const RadiosityMesh& mesh, const Camera& camera, ShadingMethod method, int tessellation,
+Renders renderBoth(const RadiosityMesh& mesh, const Camera& camera, Method method, int tessellation,
                    double exposure = 0.0, double tolerance = 0.5 / 255) {
   EglContext context;
   MeshRenderer renderer;
@@ -130,10 +130,10 @@ TEST(Tessellation, AdaptiveMeetsItsToleranceOnEveryBundledScene) {
       {"fig. 9.8 quad", bundled("fig9_8_quad.gltf"), obliqueOnQuad()},
   };
   for (const auto& scene : scenes)
-    for (ShadingMethod method : {ShadingMethod::CloughTocher, ShadingMethod::C1Quadratic})
+    for (Method method : {Method::CloughTocher, Method::C1Quadratic})
       for (double exposure : {0.0, 1.5})
         for (double steps : {0.5, 2.0}) {
-          const std::string what = scene.name + ", " + shadingMethodNames()[int(method)] + ", exposure " +
+          const std::string what = scene.name + ", " + methodName(method) + ", exposure " +
                                    std::to_string(exposure) + ", tolerance " + std::to_string(steps);
           expectWithinTolerance(
               renderBoth(scene.mesh, scene.camera, method, kAdaptiveTessellation, exposure, steps / 255),
@@ -163,10 +163,10 @@ TEST(Tessellation, NoLevelOrViewOpensCracks) {
   grazing.eye = {0.5, -1.5, 0.12};  // 4 degrees above the plane of the square
   for (const char* name : {"discontinuities.gltf", "t_vertices.gltf"}) {
     const RadiosityMesh mesh = bundled(name);
-    for (ShadingMethod method : {ShadingMethod::CloughTocher, ShadingMethod::C1Quadratic})
+    for (Method method : {Method::CloughTocher, Method::C1Quadratic})
       for (int level : {1, 64, kAdaptiveTessellation})
         for (const Camera& camera : {oblique(), grazing}) {
-          const std::string what = std::string(name) + " " + shadingMethodNames()[int(method)] + " level " +
+          const std::string what = std::string(name) + " " + methodName(method) + " level " +
                                    std::to_string(level) + (&camera == &grazing ? " grazing" : "");
           expectNoCracks(renderBoth(mesh, camera, method, level, 0.0, 0.25 / 255), what);
         }
@@ -176,7 +176,7 @@ TEST(Tessellation, NoLevelOrViewOpensCracks) {
 TEST(Tessellation, LevelSixtyFourIsSplitIntoDrawsLlvmpipeCanTake) {
   // 288 Clough-Tocher pieces at level 64 generate ~1.2 million triangles: many draws of at most
   // 50k each, and the image still matches the exact one (so no geometry went missing).
-  const Renders r = renderBoth(bundled("discontinuities.gltf"), oblique(), ShadingMethod::CloughTocher, 64);
+  const Renders r = renderBoth(bundled("discontinuities.gltf"), oblique(), Method::CloughTocher, 64);
   EXPECT_GE(r.statistics.draws, 24u);
   expectWithinTolerance(r, 0.0, 0.5 / 255, "level 64");
 }

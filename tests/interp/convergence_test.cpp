@@ -109,7 +109,7 @@ void expectOrder(const std::string& label, const Study& s, double low, double hi
 
 TEST(Convergence, LinearIsSecondOrder) {
   std::printf("[ figures  ] %-62s %9s %9s %9s %9s %9s\n", "max error at n =", "4", "8", "16", "32", "64");
-  expectOrder("linear", study({"linear", Method::Linear, {}}, false, false), 1.8, 2.2);
+  expectOrder("gouraud", study({"gouraud", Method::Gouraud, {}}, false, false), 1.8, 2.2);
 }
 
 TEST(Convergence, C1MethodsAreThirdOrderWithExactGradients) {

@@ -38,7 +38,7 @@ TEST(ElementMethods, EveryMethodInterpolatesTheNodalValuesAtNodes) {
   const RadiosityMesh quads = gridMesh(5, true, 0.2, quadraticField, 2);
   const RadiosityMesh quadraticTriangles = test::withMidEdgeNodes(triangles, quadraticField);
   for (const RadiosityMesh* mesh : {&triangles, &quads, &quadraticTriangles})
-    for (Method method : {Method::Linear, Method::Bilinear, Method::Quadratic}) {
+    for (Method method : {Method::Gouraud, Method::Bilinear, Method::Quadratic}) {
       const auto interpolant = makeInterpolant(*mesh, method);
       for (uint32_t e = 0; e < mesh->elements.size(); ++e) {
         const Element& element = mesh->elements[e];
@@ -47,7 +47,7 @@ TEST(ElementMethods, EveryMethodInterpolatesTheNodalValuesAtNodes) {
         for (uint32_t n : nodes) {
           const Rgb B = interpolant->evaluate(e, mesh->nodes[n].position).B;
           EXPECT_NEAR(glm::length(B - mesh->nodes[n].B), 0.0, 1e-13 * glm::length(mesh->nodes[n].B))
-              << methodNames()[int(method)] << " element " << e << " node " << n;
+              << methodName(method) << " element " << e << " node " << n;
         }
       }
     }
@@ -58,13 +58,13 @@ TEST(ElementMethods, DimNodesKeepTheirOwnValueNextToBrightOnes) {
   // value to its own relative precision, not to the precision of the brightest neighbour.
   RadiosityMesh mesh = gridMesh(3, false, 0.3, quadraticField, 11);
   for (size_t i = 0; i < mesh.nodes.size(); ++i) mesh.nodes[i].B = Rgb(i % 2 ? 1e8 : 1e-8, 1.0, i % 3 ? 1e-8 : 1e8);
-  for (Method method : {Method::Linear, Method::Bilinear, Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
+  for (Method method : {Method::Gouraud, Method::Bilinear, Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
     const auto interpolant = makeInterpolant(mesh, method);
     for (uint32_t e = 0; e < mesh.elements.size(); ++e)
       for (uint32_t n : mesh.elements[e].corners) {
         const Rgb got = interpolant->evaluate(e, mesh.nodes[n].position).B, want = mesh.nodes[n].B;
         for (int c = 0; c < 3; ++c)
-          EXPECT_NEAR(got[c], want[c], 1e-12 * want[c]) << methodNames()[int(method)] << " element " << e << " node " << n;
+          EXPECT_NEAR(got[c], want[c], 1e-12 * want[c]) << methodName(method) << " element " << e << " node " << n;
       }
   }
 }
@@ -82,7 +82,7 @@ TEST(ElementMethods, FlatIsTheElementMean) {
 TEST(ElementMethods, LinearAndBilinearReproduceLinearDataWithItsGradient) {
   for (bool quads : {false, true}) {
     const RadiosityMesh mesh = gridMesh(6, quads, 0.3, linearField, 4);
-    for (Method method : {Method::Linear, Method::Bilinear})
+    for (Method method : {Method::Gouraud, Method::Bilinear})
       for (QuadDiagonal diagonal : {QuadDiagonal::D02, QuadDiagonal::D13}) {
         InterpolantOptions options;
         options.diagonal = diagonal;
@@ -108,8 +108,8 @@ TEST(ElementMethods, TheTwoQuadDiagonalsDisagreeAndBilinearIsBetweenThem) {
   const Vec3 centre = plane.at(0.5, 0.5);
   InterpolantOptions d13;
   d13.diagonal = QuadDiagonal::D13;
-  EXPECT_NEAR(makeInterpolant(mesh, Method::Linear)->evaluate(0, centre).B.r, 0.8, 1e-15);
-  EXPECT_NEAR(makeInterpolant(mesh, Method::Linear, d13)->evaluate(0, centre).B.r, 0.2, 1e-15);
+  EXPECT_NEAR(makeInterpolant(mesh, Method::Gouraud)->evaluate(0, centre).B.r, 0.8, 1e-15);
+  EXPECT_NEAR(makeInterpolant(mesh, Method::Gouraud, d13)->evaluate(0, centre).B.r, 0.2, 1e-15);
   EXPECT_NEAR(makeInterpolant(mesh, Method::Bilinear)->evaluate(0, centre).B.r, 0.5, 1e-15);
 }
 

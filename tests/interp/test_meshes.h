@@ -117,7 +117,7 @@ inline std::vector<MethodCase> c1Methods(bool storedGradients = true) {
 }
 // Every method but flat: linear, bilinear, quadratic and the C1 ones.
 inline std::vector<MethodCase> allMethods(bool storedGradients = true) {
-  std::vector<MethodCase> out = {{"linear", Method::Linear, {}}, {"bilinear", Method::Bilinear, {}},
+  std::vector<MethodCase> out = {{"gouraud", Method::Gouraud, {}}, {"bilinear", Method::Bilinear, {}},
                                  {"quadratic", Method::Quadratic, {}}};
   for (const MethodCase& m : c1Methods(storedGradients)) out.push_back(m);
   return out;

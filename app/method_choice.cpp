@@ -1,0 +1,21 @@
+#include "app/method_choice.h"
+
+#include "core/strings.h"
+#include "interp/method_registry.h"
+
+#include <algorithm>
+
+namespace radview {
+
+CLI::Validator methodChoice(const std::vector<std::string>& names) {
+  return CLI::Validator(
+      [names](std::string& value) -> std::string {
+        for (const MethodInfo& info : methodRegistry())
+          if (!info.alias.empty() && info.alias == value) value = info.name;
+        if (std::find(names.begin(), names.end(), value) != names.end()) return {};
+        return value + " not in {" + joined(names, ",") + "}";
+      },
+      "{" + joined(names, ",") + "}");
+}
+
+}  // namespace radview

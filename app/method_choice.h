@@ -1,0 +1,15 @@
+#pragma once
+// The command line's check of a method name: the registry's names (interp/method_registry.h)
+// and their aliases, which it turns into the one name, so that every command reads the same.
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace radview {
+
+// Accepts `names` and the registry's aliases of them; refuses anything else with the
+// "X not in {a,b,...}" message CLI11's IsMember gives.
+CLI::Validator methodChoice(const std::vector<std::string>& names);
+
+}  // namespace radview
