@@ -68,76 +68,41 @@ class ProgressBar {
 
 }  // namespace
 
-// Patches of a scene, by default: bounds diagonal / 12 (the Cornell box: about 80 mm, 340
-// patches). Shooting costs patches x nodes, so patches are kept coarse; subdivision refines the
-// receiving elements under them (Cohen et al. 1986).
-double defaultPatchSize(const Scene& scene) {
-  const double diagonal = scene.bounds().diagonal();
-  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 12.0 : 1.0;
-}
-
-double patchSizeFor(const SolveOptions& options, const Scene& scene) {
-  return options.elementSize > 0.0 ? options.elementSize : defaultPatchSize(scene);
-}
-
-SolveSettings solveSettingsFrom(const SolveOptions& options, double patchSize) {
-  SolveSettings settings;
-  settings.solver.seed = options.seed;
-  settings.solver.samples = options.samples;
-  settings.solver.stopUnshotFraction = options.unshot;
-  settings.solver.maxShots = options.maxShots;
-  settings.solver.quadratic = options.quadratic;
-  // A discontinuity mesh's triangles are far smaller than a patch near the shadow boundaries:
-  // they shoot in groups of the patch size, and receive one by one.
-  if (options.discontinuityMeshing) settings.solver.shooterSize = patchSize;
-  settings.subdivision.tolerance = options.tolerance;
-  settings.subdivision.minElementSize = options.minElementSize > 0.0 ? options.minElementSize : patchSize / 16.0;
-  settings.subdivision.maxElements = options.maxElements;
-  settings.ambient = !options.noAmbient;
-  return settings;
-}
-
-RadiosityMesh initialMesh(const SolveOptions& options, const Scene& scene, DiscontinuityMeshReport* report) {
-  const double patchSize = patchSizeFor(options, scene);
-  return options.discontinuityMeshing ? meshWithDiscontinuities(scene, patchSize, report)
-                                      : meshUniformly(scene, patchSize);
-}
-
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   CLI::App* command = app.add_subcommand(
       "solve", "Solve SCENE's radiosity (progressive refinement, Embree visibility, adaptive subdivision with "
                "T-vertices) and write a solution file");
   command->add_option("file", o.file, "A glTF scene (.gltf/.glb)")->required();
   command->add_option("--out,-o", o.out, "The solution file to write (.glb or .gltf)")->required();
-  command->add_option("--element-size", o.elementSize,
+  command->add_option("--element-size", o.settings.patchSize,
                       "Edge length of the patches, the initial uniform mesh (default: bounds diagonal / 12)")
       ->check(CLI::Range(1e-12, 1e12));
-  command->add_option("--min-element-size", o.minElementSize,
+  command->add_option("--min-element-size", o.settings.subdivision.minElementSize,
                       "Subdivision splits no element below this size (default: the patch size / 16)")
       ->check(CLI::Range(1e-12, 1e12));
-  command->add_option("--max-elements", o.maxElements, "Subdivision stops at this many elements")
+  command->add_option("--max-elements", o.settings.subdivision.maxElements, "Subdivision stops at this many elements")
       ->check(CLI::Range(size_t(1), kMaxMeshElements))
       ->capture_default_str();
-  command->add_option("--tolerance", o.tolerance,
+  command->add_option("--tolerance", o.settings.subdivision.tolerance,
                       "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
                       "steps of the tone-mapped, sRGB-encoded luminance")
       ->check(CLI::Range(0.01, 255.0))
       ->capture_default_str();
-  command->add_flag("--quadratic", o.quadratic, "Quadratic elements: nodes at the middle of every edge too");
+  command->add_flag("--quadratic", o.settings.solver.quadratic, "Quadratic elements: nodes at the middle of every edge too");
   command->add_flag("--triangulate-t-vertices", o.triangulateTVertices,
                     "Cut every element with a T-vertex into triangles through it (Baum et al.) before writing");
-  command->add_option("--seed", o.seed, "Seed of the shooter sampling (same seed, same solution)")
+  command->add_option("--seed", o.settings.solver.seed, "Seed of the shooter sampling (same seed, same solution)")
       ->capture_default_str();
-  command->add_option("--samples", o.samples, "Shooter samples per node and shot")
+  command->add_option("--samples", o.settings.solver.samples, "Shooter samples per node and shot")
       ->check(CLI::Range(1, kMaxSolverSamples))
       ->capture_default_str();
-  command->add_option("--unshot", o.unshot, "Stop once the unshot power is this fraction of the emitted power")
+  command->add_option("--unshot", o.settings.solver.stopUnshotFraction, "Stop once the unshot power is this fraction of the emitted power")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  command->add_option("--max-shots", o.maxShots, "Stop after this many shots in any case")
+  command->add_option("--max-shots", o.settings.solver.maxShots, "Stop after this many shots in any case")
       ->check(CLI::Range(size_t(1), kMaxSolverShots))
       ->capture_default_str();
-  command->add_flag("--discontinuity-meshing", o.discontinuityMeshing,
+  command->add_flag("--discontinuity-meshing", o.settings.discontinuityMeshing,
                     "Patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
                     "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
                     "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size");
@@ -152,16 +117,16 @@ int runSolve(const SolveOptions& options) {
   if (file.isSolution) throw Error(options.file, "is a solution file already; solve takes a scene");
   for (const std::string& w : file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   const Scene& scene = file.scene;
-  const double patchSize = patchSizeFor(options, scene);
-  const SolveSettings settings = solveSettingsFrom(options, patchSize);
+  SolveSettings settings = options.settings;
+  settings.ambient = !options.noAmbient;
+  settings = resolvedFor(scene, settings);
 
-  ProgressBar bar(isatty(fileno(stderr)) != 0, options.unshot);
+  ProgressBar bar(isatty(fileno(stderr)) != 0, settings.solver.stopUnshotFraction);
   SolveSummary summary;
   DiscontinuityMeshReport discontinuities;
   RadiosityMesh mesh;
   try {
-    mesh = solveRadiosity(scene, initialMesh(options, scene, &discontinuities), settings, summary,
-                          [&](const SolveProgress& p) { bar.update(p); });
+    mesh = solveRadiosity(scene, settings, summary, [&](const SolveProgress& p) { bar.update(p); }, &discontinuities);
   } catch (const Error& e) {
     bar.finish();
     throw Error(options.file, e.what());
@@ -179,13 +144,13 @@ int runSolve(const SolveOptions& options) {
   const double absorbed = energy.absorbed.r + energy.absorbed.g + energy.absorbed.b;
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::printf("solved %s -> %s\n", options.file.c_str(), options.out.c_str());
-  std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches, patchSize,
-              mesh.elements.size(), options.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
+  std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches,
+              settings.patchSize, mesh.elements.size(), settings.solver.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
               topology.tVertices().size());
   std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements)\n",
-              summary.subdivisionRounds, summary.elementsSplit, options.tolerance, settings.subdivision.minElementSize,
-              options.maxElements);
-  if (options.discontinuityMeshing) std::cout << discontinuities << "\n" << std::flush;
+              summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,
+              settings.subdivision.minElementSize, settings.subdivision.maxElements);
+  if (settings.discontinuityMeshing) std::cout << discontinuities << "\n" << std::flush;
   std::printf("discontinuity edges: C-1 %zu, C0 %zu\n", topology.countEdges(Continuity::Cm1),
               topology.countEdges(Continuity::C0));
   if (options.triangulateTVertices) std::printf("T-vertex triangulation: %zu elements cut into triangles\n", repaired);

@@ -1,6 +1,5 @@
 #include "app/background_open.h"
 #include "app/background_pieces.h"
-#include "app/background_solve.h"
 #include "app/commands.h"
 #include "app/viewer_gather.h"
 #include "app/viewer_panel.h"
@@ -8,6 +7,7 @@
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
 #include "mesh/solution_file.h"
+#include "solve/background_solve.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -271,7 +271,7 @@ int runViewer(const ViewerOptions& options) {
     }
     if (state.solveRequested) {
       state.solveRequested = false;
-      solve.start(state.viewed.file.scene, SolveOptions{});
+      solve.start(state.viewed.file.scene, SolveSettings{});
     }
     if (state.cancelSolveRequested) {
       state.cancelSolveRequested = false;

@@ -1,25 +1,72 @@
 #include "solve/radiosity_solve.h"
 
+#include "mesh/uniform_mesher.h"
+
+#include <cmath>
+
 namespace radview {
 
-RadiosityMesh solveRadiosity(const Scene& scene, RadiosityMesh initial, const SolveSettings& settings,
-                             SolveSummary& summary, const std::function<void(const SolveProgress&)>& report) {
-  ProgressiveRefinement solver(scene, std::move(initial), settings.solver);
-  // Bounded by maxShots (finished() is true once it is reached).
-  while (solver.step())
-    if (report) report(solver.progress());
-  summary = SolveSummary{};
-  if (settings.subdivide)
-    for (; summary.subdivisionRounds < settings.maxRounds; ++summary.subdivisionRounds) {
-      const size_t split = solver.subdivide(settings.subdivision);
-      if (split == 0) break;
-      summary.elementsSplit += split;
-      if (report) report(solver.progress());
+double defaultPatchSize(const Scene& scene) {
+  const double diagonal = scene.bounds().diagonal();
+  return diagonal > 0.0 && std::isfinite(diagonal) ? diagonal / 12.0 : 1.0;
+}
+
+SolveSettings resolvedFor(const Scene& scene, SolveSettings settings) {
+  if (!(settings.patchSize > 0.0)) settings.patchSize = defaultPatchSize(scene);
+  if (!(settings.subdivision.minElementSize > 0.0)) settings.subdivision.minElementSize = settings.patchSize / 16.0;
+  // A discontinuity mesh's triangles are far smaller than a patch near the shadow boundaries:
+  // they shoot in groups of the patch size, and receive one by one.
+  if (settings.discontinuityMeshing && !(settings.solver.shooterSize > 0.0))
+    settings.solver.shooterSize = settings.patchSize;
+  return settings;
+}
+
+RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, DiscontinuityMeshReport* report) {
+  return resolved.discontinuityMeshing ? meshWithDiscontinuities(scene, resolved.patchSize, report)
+                                       : meshUniformly(scene, resolved.patchSize);
+}
+
+RadiositySolve::RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report)
+    : settings_(resolvedFor(scene, settings)),
+      solver_(std::make_unique<ProgressiveRefinement>(scene, initialMesh(scene, settings_, report), settings_.solver)) {}
+
+bool RadiositySolve::step() {
+  if (phase_ == Phase::Shooting) {
+    // Bounded by maxShots (the solver is finished once it is reached).
+    if (solver_->step()) return true;
+    phase_ = settings_.subdivide ? Phase::Subdividing : Phase::Done;
+    return phase_ != Phase::Done;
+  }
+  if (phase_ == Phase::Subdividing) {
+    const size_t split = rounds_ < settings_.maxRounds ? solver_->subdivide(settings_.subdivision) : 0;
+    if (split > 0) {
+      ++rounds_;
+      split_ += split;
+      return true;
     }
-  summary.progress = solver.progress();
-  summary.ignoredPolygons = solver.ignoredPolygons();
-  summary.energy = solver.energyBalance();
-  return solver.solution(settings.ambient);
+    phase_ = Phase::Done;
+  }
+  return false;
+}
+
+SolveSummary RadiositySolve::summary() const {
+  SolveSummary summary;
+  summary.progress = solver_->progress();
+  summary.subdivisionRounds = rounds_;
+  summary.elementsSplit = split_;
+  summary.ignoredPolygons = solver_->ignoredPolygons();
+  summary.energy = solver_->energyBalance();
+  return summary;
+}
+
+RadiosityMesh solveRadiosity(const Scene& scene, const SolveSettings& settings, SolveSummary& summary,
+                             const std::function<void(const SolveProgress&)>& report,
+                             DiscontinuityMeshReport* discontinuities) {
+  RadiositySolve solve(scene, settings, discontinuities);
+  while (solve.step())
+    if (report) report(solve.progress());
+  summary = solve.summary();
+  return solve.solution();
 }
 
 }  // namespace radview

@@ -4,7 +4,7 @@
 //    on both cores, against EmbreeOccluded1: Embree's rtcOccluded1 alone on the same rays (the
 //    segments that shot casts, in the same frame), on both cores;
 //  - SolveTime/N: a whole solve with `radview solve`'s defaults (patches of diagonal / 12, to
-//    1 % unshot), subdivision up to N elements.
+//    1 % unshot; meshing included), subdivision up to N elements.
 //   build/radview_solver_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 #include "core/parallel_for.h"
 #include "geom/polygon.h"
@@ -23,10 +23,9 @@ namespace {
 
 struct Fixture {
   Scene scene;
-  RadiosityMesh patches, fine;
+  RadiosityMesh fine;
   Fixture() {
     scene = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf").scene;
-    patches = meshUniformly(scene, scene.bounds().diagonal() / 12.0);
     fine = meshUniformly(scene, scene.bounds().diagonal() / 40.0);
   }
 };
@@ -121,10 +120,9 @@ void SolveTime(benchmark::State& state) {
   Fixture& f = fixture();
   SolveSettings settings;
   settings.subdivision.maxElements = size_t(state.range(0));
-  settings.subdivision.minElementSize = f.scene.bounds().diagonal() / 12.0 / 16.0;
   SolveSummary summary;
   for (auto _ : state) {
-    const RadiosityMesh mesh = solveRadiosity(f.scene, f.patches, settings, summary);
+    const RadiosityMesh mesh = solveRadiosity(f.scene, settings, summary);
     benchmark::DoNotOptimize(mesh.nodes.data());
   }
   state.counters["elements"] = double(summary.progress.elements);

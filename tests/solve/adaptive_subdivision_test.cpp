@@ -43,8 +43,8 @@ RadiosityMesh solvedCornell(bool quadratic, SolveSummary& summary) {
   settings.subdivision.tolerance = 8.0;
   settings.subdivision.minElementSize = 12.0;
   settings.subdivision.maxElements = 3000;
-  const Scene scene = test::cornellBox();
-  return solveRadiosity(scene, meshUniformly(scene, 100.0), settings, summary);
+  settings.patchSize = 100.0;
+  return solveRadiosity(test::cornellBox(), settings, summary);
 }
 
 TEST(AdaptiveSubdivisionTest, DisplayValueIsEightBitSrgbOfToneMappedLuminance) {

@@ -243,10 +243,10 @@ TEST(ProgressiveRefinementTest, SolveReportsProgress) {
   SolveSettings settings;
   settings.solver.maxShots = 10;
   settings.subdivide = false;
+  settings.patchSize = 100.0;
   SolveSummary summary;
   size_t reports = 0;
-  const RadiosityMesh mesh = solveRadiosity(cornellBox(), meshUniformly(cornellBox(), 100.0), settings, summary,
-                                            [&](const SolveProgress&) { ++reports; });
+  const RadiosityMesh mesh = solveRadiosity(cornellBox(), settings, summary, [&](const SolveProgress&) { ++reports; });
   EXPECT_EQ(reports, 10u);
   EXPECT_EQ(summary.progress.shots, 10u);
   EXPECT_GT(summary.progress.rays, 0u);

@@ -1,11 +1,12 @@
 #pragma once
-// `radview solve` run beside the viewer's frame loop: a worker thread shoots and subdivides,
-// and every quarter second publishes the partial solution (with the ambient term, Cohen et
-// al. 1988, so it is shown at its final brightness from the first shots) for the window to
-// draw, which stays responsive throughout.
-#include "app/command_solve.h"
+// A solve run beside a frame loop (the viewer's): a worker thread takes RadiositySolve's steps,
+// the same as `radview solve`, and every quarter second publishes the partial solution (with
+// the ambient term, Cohen et al. 1988, so it is shown at its final brightness from the first
+// shots) for the window to draw, which stays responsive throughout; it can be cancelled
+// between two steps.
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
+#include "solve/radiosity_solve.h"
 
 #include <atomic>
 #include <mutex>
@@ -23,7 +24,7 @@ class BackgroundSolve {
   BackgroundSolve& operator=(const BackgroundSolve&) = delete;
 
   // Starts solving a copy of `scene` (cancelling a solve under way).
-  void start(const Scene& scene, const SolveOptions& options);
+  void start(const Scene& scene, const SolveSettings& settings);
   // Stops after the shot or subdivision round in progress; what was published stays.
   void cancel();
   // Cancels and forgets the solve: nothing it published is handed out any more.
@@ -36,7 +37,7 @@ class BackgroundSolve {
   std::string status() const;
 
  private:
-  void run(Scene scene, SolveOptions options);
+  void run(Scene scene, SolveSettings settings);
   void publish(RadiosityMesh mesh, const std::string& status);
 
   std::thread worker_;

@@ -1,8 +1,6 @@
-#include "app/background_solve.h"
+#include "solve/background_solve.h"
 
-#include "core/error.h"
 #include "mesh/topology.h"
-#include "solve/progressive_refinement.h"
 
 #include <chrono>
 #include <cstdio>
@@ -25,7 +23,7 @@ std::string describe(const char* phase, const SolveProgress& p, size_t tVertices
 
 BackgroundSolve::~BackgroundSolve() { cancel(); }
 
-void BackgroundSolve::start(const Scene& scene, const SolveOptions& options) {
+void BackgroundSolve::start(const Scene& scene, const SolveSettings& settings) {
   cancel();
   cancelled_ = false;
   running_ = true;
@@ -33,7 +31,7 @@ void BackgroundSolve::start(const Scene& scene, const SolveOptions& options) {
     std::lock_guard<std::mutex> lock(mutex_);
     status_ = "solving: meshing the patches";
   }
-  worker_ = std::thread(&BackgroundSolve::run, this, scene, options);
+  worker_ = std::thread(&BackgroundSolve::run, this, scene, settings);
 }
 
 void BackgroundSolve::cancel() {
@@ -66,25 +64,23 @@ void BackgroundSolve::publish(RadiosityMesh mesh, const std::string& status) {
   status_ = status;
 }
 
-// The same steps as solveRadiosity (renderer/solve/radiosity_solve.cpp), with a look at the
-// clock and the cancel flag between them.
-void BackgroundSolve::run(Scene scene, SolveOptions options) {
+// RadiositySolve's steps, with a look at the clock and the cancel flag between them: the
+// partial solution is published at most every kPublishEvery while shooting, and before every
+// round of subdivision.
+void BackgroundSolve::run(Scene scene, SolveSettings settings) {
   try {
-    const SolveSettings settings = solveSettingsFrom(options, patchSizeFor(options, scene));
-    ProgressiveRefinement solver(scene, initialMesh(options, scene, nullptr), settings.solver);
+    RadiositySolve solve(scene, settings);
     auto last = Clock::now();
     auto show = [&](const char* phase) {
-      RadiosityMesh mesh = solver.solution(settings.ambient);
+      RadiosityMesh mesh = solve.solution();
       const size_t tVertices = MeshTopology(mesh).tVertices().size();
-      publish(std::move(mesh), describe(phase, solver.progress(), tVertices));
+      publish(std::move(mesh), describe(phase, solve.progress(), tVertices));
       last = Clock::now();
     };
     show("shooting");
-    while (!cancelled_ && solver.step())
-      if (Clock::now() - last > kPublishEvery) show("shooting");
-    for (int round = 0; !cancelled_ && round < settings.maxRounds; ++round) {
-      show("subdividing");
-      if (solver.subdivide(settings.subdivision) == 0) break;
+    while (!cancelled_ && solve.step()) {
+      if (solve.phase() == RadiositySolve::Phase::Subdividing) show("subdividing");
+      else if (Clock::now() - last > kPublishEvery) show("shooting");
     }
     show(cancelled_ ? "cancelled" : "solved");
   } catch (const std::exception& e) {
