@@ -3,12 +3,15 @@
 #include "app/commands.h"
 #include "app/method_choice.h"
 #include "app/viewed_file.h"
+#include "bench/bench_variants.h"
+#include "bench/image_error.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
 #include "core/atomic_file.h"
 #include "core/camera.h"
 #include "core/display_transform.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
 #include "gather/final_gather.h"
@@ -34,56 +37,13 @@ std::vector<double> numberList(const std::string& text, const std::string& optio
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != item.size() || !std::isfinite(v))
-      throw Error(option + " '" + text + "': expected numbers separated by commas");
-    values.push_back(v);
+    const size_t first = item.find_first_not_of(' '), last = item.find_last_not_of(' ');
+    const std::optional<double> v =
+        first == std::string::npos ? std::nullopt : parseFiniteNumber(std::string_view(item).substr(first, last + 1 - first));
+    if (!v) throw Error(option + " '" + text + "': expected numbers separated by commas");
+    values.push_back(*v);
   }
   return values;
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// A GL method at one setting: what a row renders.
-struct Variant {
-  Method method;
-  int tessellation = 0;  // 0 per pixel, a level, or kAdaptiveTessellation
-  double tolerance = 0.5;
-  bool relaxed = true;   // C0 edges tagged (false: the mesh without its C0 tags)
-  std::string setting;
-};
-
-// Pixels that see an element whose plane their four neighbours see too (no silhouette).
-std::vector<char> interiorPixels(const RadiosityMesh& mesh, const std::vector<int32_t>& elementAt, int width,
-                                 int height) {
-  const double tolerance = 1e-9 * mesh.bounds().diagonal();
-  auto samePlane = [&](int32_t a, int32_t b) {
-    if (a < 0 || b < 0) return false;
-    if (a == b) return true;
-    const Vec3 n = mesh.elementNormal(size_t(a));
-    return glm::dot(n, mesh.elementNormal(size_t(b))) > 1.0 - 1e-9 &&
-           std::abs(glm::dot(n, mesh.nodes[mesh.elements[b].corners[0]].position -
-                                    mesh.nodes[mesh.elements[a].corners[0]].position)) < tolerance;
-  };
-  std::vector<char> interior(elementAt.size(), 0);
-  for (int y = 1; y + 1 < height; ++y)
-    for (int x = 1; x + 1 < width; ++x) {
-      const size_t p = size_t(y) * width + x;
-      interior[p] = samePlane(elementAt[p], elementAt[p - 1]) && samePlane(elementAt[p], elementAt[p + 1]) &&
-                    samePlane(elementAt[p], elementAt[p - width]) && samePlane(elementAt[p], elementAt[p + width]);
-    }
-  return interior;
 }
 
 }  // namespace
@@ -176,26 +136,7 @@ int runBench(const BenchOptions& options) {
                                   unrelaxed.discontinuities.end());
   const bool hasC0 = unrelaxed.discontinuities.size() != mesh.discontinuities.size();
 
-  std::vector<Variant> variants;
-  for (const MethodInfo& info : methodRegistry()) {
-    const Method m = info.method;
-    if (!info.bezierPieces) {
-      variants.push_back({m, 0, 0.5, true, "per pixel"});
-      continue;
-    }
-    // Relaxation along C0 edges is what the C1 methods do; without C0 tags there is nothing to drop.
-    for (bool relaxed : {true, false}) {
-      if (!relaxed && !(info.c1 && hasC0)) continue;
-      const std::string suffix = relaxed ? "" : ", C0 not relaxed";
-      variants.push_back({m, 0, 0.5, relaxed, "per pixel" + suffix});
-      for (int level : levels) variants.push_back({m, level, 0.5, relaxed, "level " + std::to_string(level) + suffix});
-      for (double t : tolerances) {
-        char name[48];
-        std::snprintf(name, sizeof name, "adaptive %g", t);
-        variants.push_back({m, gl::kAdaptiveTessellation, t, relaxed, name + suffix});
-      }
-    }
-  }
+  const std::vector<BenchVariant> variants = benchVariants(levels, tolerances, hasC0, gl::kAdaptiveTessellation);
 
   gl::EglContext context;
   gl::MeshRenderer renderer;
@@ -208,7 +149,7 @@ int runBench(const BenchOptions& options) {
   // per-pixel row already shows exactly.
   std::map<std::pair<int, bool>, double> trianglesPerLevelSquared;
   std::vector<std::string> skipped;
-  for (const Variant& v : variants) {
+  for (const BenchVariant& v : variants) {
     const bool fixedLevel = v.tessellation > 0 && v.tessellation != gl::kAdaptiveTessellation;
     const std::pair<int, bool> methodAndMesh{int(v.method), v.relaxed};
     const auto perLevelSquared = trianglesPerLevelSquared.find(methodAndMesh);
@@ -256,20 +197,9 @@ int runBench(const BenchOptions& options) {
     LinearImage image = renderer.readLinear();
     for (size_t p = 0; p < interior.size(); ++p)
       if (!interior[p]) image.rgba[4 * p + 3] = 0.0f;  // left out of every comparison below
-    double sum = 0.0, worst = 0.0;
-    size_t count = 0;
-    for (size_t i = 0; i < image.rgba.size(); i += 4) {
-      const float* a = &image.rgba[i];
-      const float* b = &referenceImage.pixels.rgba[i];
-      if (!(a[3] > 0.5f && b[3] > 0.5f)) continue;
-      const double d = luminance(Rgb(a[0], a[1], a[2])) - luminance(Rgb(b[0], b[1], b[2]));
-      if (!std::isfinite(d)) continue;
-      sum += d * d;
-      worst = std::max(worst, std::abs(d));
-      ++count;
-    }
-    row.rmse = count ? std::sqrt(sum / double(count)) : 0.0;
-    row.maxError = worst;
+    const LuminanceError error = luminanceError(image, referenceImage.pixels);
+    row.rmse = error.rmse;
+    row.maxError = error.max;
     const DisplayDifference shown = displayDifference(image, referenceImage, exposureScale);
     row.displayRmse = shown.rmse * 255.0;
     row.displayMax = shown.maxAbs * 255.0;

@@ -2,6 +2,7 @@
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/strings.h"
 #include "core/limits.h"
 #include "core/memory_budget.h"
 #include "core/image_difference.h"
@@ -68,17 +69,11 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
 int parseTessellation(const std::string& text) {
   if (text == "exact") return 0;
   if (text == "adaptive") return gl::kAdaptiveTessellation;
-  size_t used = 0;
-  int level = 0;
-  try {
-    level = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || level < 1 || level > kMaxTessellationLevel)
+  const std::optional<int64_t> level = parseInteger(text);
+  if (!level || *level < 1 || *level > kMaxTessellationLevel)
     throw Error("--tessellation '" + text + "': expected exact, adaptive or a level 1.." +
                 std::to_string(kMaxTessellationLevel));
-  return level;
+  return int(*level);
 }
 
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,

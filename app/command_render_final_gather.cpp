@@ -4,7 +4,7 @@
 #include "app/commands.h"
 #include "app/viewed_file.h"
 #include "core/camera.h"
-#include "core/display_transform.h"
+#include "core/displayed_image.h"
 #include "core/error.h"
 #include "gather/final_gather.h"
 
@@ -39,22 +39,8 @@ std::string glOnlyOptionGiven(const DisplayOptions& d) {
 
 }  // namespace
 
-// The GL display pass's picture of a linear image (shaders/tonemap.frag): exposure and sRGB
-// where a surface is seen, the background colour where none is; a pixel partly covered blends
-// the two by its coverage (the gather antialiases, the GL renderer does not).
 Image displayedGather(const LinearImage& linear, double exposureScale) {
-  const gl::RenderSettings defaults;
-  const Rgb background(defaults.background);
-  Image image{linear.width, linear.height, std::vector<uint8_t>(linear.rgba.size())};
-  for (size_t i = 0; i < linear.rgba.size() / 4; ++i) {
-    const float* p = &linear.rgba[4 * i];
-    const double alpha = p[3];
-    const Rgb shown = alpha > 0.0 ? displayed(Rgb(p[0], p[1], p[2]), exposureScale) : Rgb(0.0);
-    const Rgb blended = alpha * shown + (1.0 - alpha) * background;
-    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = uint8_t(std::lround(255.0 * blended[c]));
-    image.rgba[4 * i + 3] = 255;
-  }
-  return image;
+  return displayedImage(linear, exposureScale, Rgb(gl::RenderSettings{}.background));
 }
 
 void checkGatherOptions(const GatherOptions& options) {

@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
+#include "core/strings.h"
 #include "interp/interpolant.h"
 #include "interp/surface_locator.h"
 
@@ -35,15 +36,6 @@ std::string readAll(std::istream& in) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-// A finite double filling all of `word`, decimal, a '+' in front allowed as strtod allows it.
-std::optional<double> finiteNumber(std::string_view word) {
-  if (word.size() > 1 && word[0] == '+' && word[1] != '-') word.remove_prefix(1);
-  double v = 0.0;
-  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), v);
-  if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
 }
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -75,7 +67,7 @@ std::vector<PointRequest> parsePoints(std::string_view text, const std::string& 
         while (j < entry.size() && !isBlank(entry[j])) ++j;
         if (j > i) {
           const std::string_view word = entry.substr(i, j - i);
-          const std::optional<double> v = finiteNumber(word);
+          const std::optional<double> v = parseFiniteNumber(word);
           if (!v) throw Error(where() + ": '" + std::string(word) + "' is not a finite number");
           if (count == 4) throw Error(where() + ": expected 'x y z' or 'element b0 b1 b2'");
           words[count] = word;

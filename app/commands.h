@@ -91,8 +91,8 @@ struct ViewerOptions {
 };
 
 int runRender(const RenderOptions& options);
-// A final-gather image as the GL display pass would show it: exposure and sRGB where a surface
-// is seen, blended with the background by coverage.
+// The final gather's image as the GL renderer would display it, on its background colour
+// (core/displayed_image.h).
 Image displayedGather(const LinearImage& linear, double exposureScale);
 int runInfo(const InfoOptions& options);
 int runSample(const SampleOptions& options);
