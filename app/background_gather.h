@@ -22,10 +22,10 @@ namespace radview {
 
 // What the panel shows of a gather.
 struct GatherProgress {
-  bool preview = false;  // the quarter-resolution preview is what is published so far
-  int spp = 0;           // samples per pixel of the full-resolution mean (0 during the preview)
-  double seconds = 0.0;  // spent gathering, previews and set-up included, waiting not
-  uint64_t rays = 0;     // cast, previews included
+  bool preview = false;        // the quarter-resolution preview is what is published so far
+  int spp = 0;                 // samples per pixel of the full-resolution mean (0 during the preview)
+  double seconds = 0.0;        // spent gathering, previews and set-up included, waiting not
+  uint64_t rays = 0;           // cast, previews included
   bool reachedTarget = false;  // it has the samples asked for and waits
   std::string error;           // why it stopped, if it failed
 };
@@ -68,7 +68,7 @@ class BackgroundGather {
   std::thread worker_;
   std::optional<GatherSettings> settings_;
   std::atomic<bool> cancelled_{false};
-  mutable std::mutex mutex_;  // guards the fields below
+  mutable std::mutex mutex_;         // guards the fields below
   std::condition_variable changed_;  // the target, pause, cancellation or progress changed
   int targetSpp_ = 1;
   bool paused_ = false;

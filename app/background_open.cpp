@@ -1,8 +1,8 @@
 #include "app/background_open.h"
 
 #include <cstdio>
-#include <memory>
 #include <exception>
+#include <memory>
 
 namespace radview {
 

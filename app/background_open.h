@@ -45,8 +45,8 @@ class BackgroundOpen {
   std::thread worker_;
   mutable std::mutex mutex_;  // guards the fields below
   bool busy_ = false;
-  std::string path_;                           // the opening under way
-  std::optional<std::string> pending_;         // the request that waits for it
+  std::string path_;                    // the opening under way
+  std::optional<std::string> pending_;  // the request that waits for it
   std::optional<Result> finished_;
   std::chrono::steady_clock::time_point started_;
 };

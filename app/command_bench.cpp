@@ -11,9 +11,9 @@
 #include "core/camera.h"
 #include "core/display_transform.h"
 #include "core/error.h"
-#include "core/strings.h"
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
+#include "core/strings.h"
 #include "gather/final_gather.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
@@ -38,8 +38,9 @@ std::vector<double> numberList(const std::string& text, const std::string& optio
   std::string item;
   while (std::getline(in, item, ',')) {
     const size_t first = item.find_first_not_of(' '), last = item.find_last_not_of(' ');
-    const std::optional<double> v =
-        first == std::string::npos ? std::nullopt : parseFiniteNumber(std::string_view(item).substr(first, last + 1 - first));
+    const std::optional<double> v = first == std::string::npos
+                                        ? std::nullopt
+                                        : parseFiniteNumber(std::string_view(item).substr(first, last + 1 - first));
     if (!v) throw Error(option + " '" + text + "': expected numbers separated by commas");
     values.push_back(*v);
   }
@@ -49,9 +50,10 @@ std::vector<double> numberList(const std::string& text, const std::string& optio
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
-  CLI::App* command = app.add_subcommand(
-      "bench", "Measure every method and setting on one view: GPU frame time, triangles, error against the "
-               "per-pixel final gather, Mach bands; writes a Markdown table, CSV and a plot");
+  CLI::App* command =
+      app.add_subcommand("bench",
+                         "Measure every method and setting on one view: GPU frame time, triangles, error against the "
+                         "per-pixel final gather, Mach bands; writes a Markdown table, CSV and a plot");
   command->add_option("file", o.file, "A solution file, or a scene (meshed and lit directly)")->required();
   command->add_option("--camera", o.camera, "As render --camera");
   command->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
@@ -68,13 +70,15 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   command->add_option("--levels", o.levels, "Tessellation levels, comma-separated, 1..64")->capture_default_str();
   command->add_option("--tolerances", o.tolerances, "Adaptive tessellation tolerances, 8-bit steps, comma-separated")
       ->capture_default_str();
-  command->add_option("--max-triangles-per-pixel", o.maxTrianglesPerPixel,
-                      "Skip the fixed tessellation levels whose triangles would outnumber the pixels this many "
-                      "times (the per-pixel row is as exact, and far cheaper); 0 measures every level")
+  command
+      ->add_option("--max-triangles-per-pixel", o.maxTrianglesPerPixel,
+                   "Skip the fixed tessellation levels whose triangles would outnumber the pixels this many "
+                   "times (the per-pixel row is as exact, and far cheaper); 0 measures every level")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
-  command->add_option("--out-dir", o.outDir,
-                      "Where bench.md, bench.csv, bench.png, reference.exr/.png and each method's PNG go")
+  command
+      ->add_option("--out-dir", o.outDir,
+                   "Where bench.md, bench.csv, bench.png, reference.exr/.png and each method's PNG go")
       ->capture_default_str();
   command->add_option("--element-size", o.elementSize, "Scenes: element size of the uniform mesh")
       ->check(CLI::Range(1e-12, 1e12));
@@ -93,7 +97,8 @@ int runBench(const BenchOptions& options) {
   }
   const std::vector<double> tolerances = numberList(options.tolerances, "--tolerances");
   for (double t : tolerances)
-    if (!(t >= 0.01 && t <= 100.0)) throw Error("--tolerances: " + std::to_string(t) + " is not within 0.01..100 steps");
+    if (!(t >= 0.01 && t <= 100.0))
+      throw Error("--tolerances: " + std::to_string(t) + " is not within 0.01..100 steps");
   std::error_code ec;
   std::filesystem::create_directories(options.outDir, ec);
   if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
@@ -116,8 +121,8 @@ int runBench(const BenchOptions& options) {
   const ReferenceImage referenceImage{reference.image(), true, options.outDir + "/reference.exr"};
   writeLinearImage(referenceImage.pixels, referenceImage.path);
   writePng(displayedGather(referenceImage.pixels, exposureScale), options.outDir + "/reference.png");
-  std::printf("reference: final gather, %d spp, B^ %s, %dx%d: %.1f s\n", options.spp,
-              options.gatherInterpolant.c_str(), width, height, gatherSeconds);
+  std::printf("reference: final gather, %d spp, B^ %s, %dx%d: %.1f s\n", options.spp, options.gatherInterpolant.c_str(),
+              width, height, gatherSeconds);
 
   const std::vector<int32_t> elementAt = visibleElements(mesh, camera, width, height);
   const EdgeStencils stencils = edgeStencils(mesh, elementAt, width, height);
@@ -186,10 +191,11 @@ int runBench(const BenchOptions& options) {
     row.frameMs = median(ms);
     const auto& tess = renderer.tessellationStatistics();
     if (fixedLevel)
-      trianglesPerLevelSquared[methodAndMesh] = double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
+      trianglesPerLevelSquared[methodAndMesh] =
+          double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
     row.triangles = !methodInfo(v.method).bezierPieces ? renderer.triangleCount()
-                    : v.tessellation == 0   ? tess.patches
-                                            : tess.trianglesGenerated;
+                    : v.tessellation == 0              ? tess.patches
+                                                       : tess.trianglesGenerated;
     if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
       std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
       writePng(renderer.readDisplay(), options.outDir + "/" + name);
@@ -213,8 +219,9 @@ int runBench(const BenchOptions& options) {
 
   std::ostringstream header;
   header << "radview bench " << options.file << ": " << width << "x" << height << ", camera '"
-         << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure << "; reference "
-         << options.spp << " spp final gather (B^ " << options.gatherInterpolant << ", " << gatherSeconds << " s); "
+         << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure
+         << "; reference " << options.spp << " spp final gather (B^ " << options.gatherInterpolant << ", "
+         << gatherSeconds << " s); "
          << "its own Mach-band measure " << referenceMach << ", C0 kinks " << referenceKinks << " steps/px (noise "
          << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
          << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames << " frames.\n";

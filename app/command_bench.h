@@ -9,19 +9,19 @@ namespace radview {
 
 struct BenchOptions {
   std::string file;
-  std::string camera;              // as render --camera
+  std::string camera;  // as render --camera
   std::string size = "512x512";
   double exposure = 0.0;
-  int spp = 256;                   // the reference's samples per pixel
+  int spp = 256;                                    // the reference's samples per pixel
   std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
-  int frames = 9;                  // timed frames per row (median)
-  std::string levels = "1,2,4,8,16,32,64";  // tessellation levels of the quadratic and C1 methods
-  std::string tolerances = "0.5,2";          // adaptive tessellation tolerances, 8-bit steps
+  int frames = 9;                                   // timed frames per row (median)
+  std::string levels = "1,2,4,8,16,32,64";          // tessellation levels of the quadratic and C1 methods
+  std::string tolerances = "0.5,2";                 // adaptive tessellation tolerances, 8-bit steps
   // Fixed levels whose triangles would outnumber the image's pixels this many times are not
   // measured (0: every level is).
   double maxTrianglesPerPixel = 16.0;
   std::string outDir = "bench";
-  double elementSize = 0.0;        // scenes only
+  double elementSize = 0.0;  // scenes only
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);

@@ -2,10 +2,10 @@
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "core/error.h"
-#include "core/strings.h"
+#include "core/image_difference.h"
 #include "core/limits.h"
 #include "core/memory_budget.h"
-#include "core/image_difference.h"
+#include "core/strings.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "interp/tessellation_level.h"
@@ -56,8 +56,8 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
     throw Error("--tolerance " + std::to_string(display.tolerance) + ": expected 0.01 .. 100 8-bit steps");
   settings.tessellationTolerance = display.tolerance / 255.0;
   settings.comparisonMethod = methodFromName(display.compareWith);
-  settings.comparison = display.reference.empty() ? gl::RenderSettings::Comparison::Method
-                                                  : gl::RenderSettings::Comparison::Image;
+  settings.comparison =
+      display.reference.empty() ? gl::RenderSettings::Comparison::Method : gl::RenderSettings::Comparison::Image;
   if (!display.reference.empty() && settings.view != gl::DisplayView::Difference)
     throw Error("--reference needs --view difference");
   if (!(display.differenceScale >= 0.01 && display.differenceScale <= 255.0))
@@ -100,12 +100,13 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
   std::printf("%s\n", out.c_str());
   if (settings.view == gl::DisplayView::Difference) {
     const std::string against = display.reference.empty() ? display.compareWith : display.reference;
-    const DisplayDifference d = displayDifference(renderer.readLinear(), renderer.readComparison(),
-                                                  std::exp2(settings.exposure));
-    std::printf("difference %s - %s: %zu pixels, RMSE %.4g, max %.4g, mean %.4g 8-bit steps of displayed "
-                "luminance; colour bar -%.4g (blue) .. +%.4g (red)\n",
-                display.method.c_str(), against.c_str(), d.pixels, d.rmse * 255.0, d.maxAbs * 255.0,
-                d.meanSigned * 255.0, display.differenceScale, display.differenceScale);
+    const DisplayDifference d =
+        displayDifference(renderer.readLinear(), renderer.readComparison(), std::exp2(settings.exposure));
+    std::printf(
+        "difference %s - %s: %zu pixels, RMSE %.4g, max %.4g, mean %.4g 8-bit steps of displayed "
+        "luminance; colour bar -%.4g (blue) .. +%.4g (red)\n",
+        display.method.c_str(), against.c_str(), d.pixels, d.rmse * 255.0, d.maxAbs * 255.0, d.meanSigned * 255.0,
+        display.differenceScale, display.differenceScale);
   }
 }
 

@@ -8,10 +8,10 @@
 #include "core/error.h"
 #include "gather/final_gather.h"
 
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <unistd.h>
 
 namespace radview {
 
@@ -52,8 +52,8 @@ void checkGatherOptions(const GatherOptions& options) {
                 std::to_string(kMaxEmitterSamples));
 }
 
-void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options,
-                       int width, int height, const std::string& out, const std::string& linearOut) {
+void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options, int width,
+                       int height, const std::string& out, const std::string& linearOut) {
   const std::string glOnly = glOnlyOptionGiven(display);
   if (!glOnly.empty()) throw Error(glOnly + ": a GL display option, not available with --method final-gather");
   checkGatherOptions(options);
@@ -72,7 +72,8 @@ void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, 
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (gather.samplesPerPixel() < options.spp) {
     gather.addPasses(1);
-    if (progress) std::fprintf(stderr, "\rfinal gather: %d/%d spp, %.1f s", gather.samplesPerPixel(), options.spp, seconds());
+    if (progress)
+      std::fprintf(stderr, "\rfinal gather: %d/%d spp, %.1f s", gather.samplesPerPixel(), options.spp, seconds());
   }
   if (progress) std::fprintf(stderr, "\n");
   const double elapsed = seconds();

@@ -162,9 +162,10 @@ int runSample(const SampleOptions& options) {
                   " away, more than --max-distance " + std::to_string(maxDistance));
   const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
 
-  std::printf("# radview sample %s --method %s: element x y z distance B_r B_g B_b "
-              "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
-              options.file.c_str(), methodName(method).c_str());
+  std::printf(
+      "# radview sample %s --method %s: element x y z distance B_r B_g B_b "
+      "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
+      options.file.c_str(), methodName(method).c_str());
   // Evaluated and formatted on every core, a block of lines at a time, written in order.
   constexpr size_t kLine = 512, kBlock = 16384;  // a line is at most 10 + 18 * 25 characters
   std::vector<char> lines(kLine * std::min(kBlock, points.size()));
@@ -177,7 +178,8 @@ int runSample(const SampleOptions& options) {
       char* const begin = &lines[i * kLine];
       char* out = std::to_chars(begin, begin + 16, point.element).ptr;
       *out++ = ' ';
-      for (double v : {point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b}) out = appendNumber(out, v, ' ');
+      for (double v : {point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b})
+        out = appendNumber(out, v, ' ');
       for (const Vec3& g : s.gradient)
         for (int k = 0; k < 3; ++k) out = appendNumber(out, g[k], ' ');
       out[-1] = '\n';

@@ -27,10 +27,14 @@ using Clock = std::chrono::steady_clock;
 
 std::string humanCount(double n) {
   char text[32];
-  if (n >= 1e9) std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
-  else if (n >= 1e6) std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
-  else if (n >= 1e3) std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
-  else std::snprintf(text, sizeof text, "%.0f", n);
+  if (n >= 1e9)
+    std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
+  else if (n >= 1e6)
+    std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
+  else if (n >= 1e3)
+    std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
+  else
+    std::snprintf(text, sizeof text, "%.0f", n);
   return text;
 }
 
@@ -70,25 +74,30 @@ class ProgressBar {
 
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   CLI::App* command = app.add_subcommand(
-      "solve", "Solve SCENE's radiosity (progressive refinement, Embree visibility, adaptive subdivision with "
-               "T-vertices) and write a solution file");
+      "solve",
+      "Solve SCENE's radiosity (progressive refinement, Embree visibility, adaptive subdivision with "
+      "T-vertices) and write a solution file");
   command->add_option("file", o.file, "A glTF scene (.gltf/.glb)")->required();
   command->add_option("--out,-o", o.out, "The solution file to write (.glb or .gltf)")->required();
-  command->add_option("--element-size", o.settings.patchSize,
-                      "Edge length of the patches, the initial uniform mesh (default: bounds diagonal / 12)")
+  command
+      ->add_option("--element-size", o.settings.patchSize,
+                   "Edge length of the patches, the initial uniform mesh (default: bounds diagonal / 12)")
       ->check(CLI::Range(1e-12, 1e12));
-  command->add_option("--min-element-size", o.settings.subdivision.minElementSize,
-                      "Subdivision splits no element below this size (default: the patch size / 16)")
+  command
+      ->add_option("--min-element-size", o.settings.subdivision.minElementSize,
+                   "Subdivision splits no element below this size (default: the patch size / 16)")
       ->check(CLI::Range(1e-12, 1e12));
   command->add_option("--max-elements", o.settings.subdivision.maxElements, "Subdivision stops at this many elements")
       ->check(CLI::Range(size_t(1), kMaxMeshElements))
       ->capture_default_str();
-  command->add_option("--tolerance", o.settings.subdivision.tolerance,
-                      "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
-                      "steps of the tone-mapped, sRGB-encoded luminance")
+  command
+      ->add_option("--tolerance", o.settings.subdivision.tolerance,
+                   "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
+                   "steps of the tone-mapped, sRGB-encoded luminance")
       ->check(CLI::Range(0.01, 255.0))
       ->capture_default_str();
-  command->add_flag("--quadratic", o.settings.solver.quadratic, "Quadratic elements: nodes at the middle of every edge too");
+  command->add_flag("--quadratic", o.settings.solver.quadratic,
+                    "Quadratic elements: nodes at the middle of every edge too");
   command->add_flag("--triangulate-t-vertices", o.triangulateTVertices,
                     "Cut every element with a T-vertex into triangles through it (Baum et al.) before writing");
   command->add_option("--seed", o.settings.solver.seed, "Seed of the shooter sampling (same seed, same solution)")
@@ -96,7 +105,9 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   command->add_option("--samples", o.settings.solver.samples, "Shooter samples per node and shot")
       ->check(CLI::Range(1, kMaxSolverSamples))
       ->capture_default_str();
-  command->add_option("--unshot", o.settings.solver.stopUnshotFraction, "Stop once the unshot power is this fraction of the emitted power")
+  command
+      ->add_option("--unshot", o.settings.solver.stopUnshotFraction,
+                   "Stop once the unshot power is this fraction of the emitted power")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   command->add_option("--max-shots", o.settings.solver.maxShots, "Stop after this many shots in any case")
@@ -126,7 +137,8 @@ int runSolve(const SolveOptions& options) {
   DiscontinuityMeshReport discontinuities;
   RadiosityMesh mesh;
   try {
-    mesh = solveRadiosity(scene, settings, summary, [&](const SolveProgress& p) { bar.update(p); }, &discontinuities);
+    mesh = solveRadiosity(
+        scene, settings, summary, [&](const SolveProgress& p) { bar.update(p); }, &discontinuities);
   } catch (const Error& e) {
     bar.finish();
     throw Error(options.file, e.what());
@@ -144,8 +156,8 @@ int runSolve(const SolveOptions& options) {
   const double absorbed = energy.absorbed.r + energy.absorbed.g + energy.absorbed.b;
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   std::printf("solved %s -> %s\n", options.file.c_str(), options.out.c_str());
-  std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches,
-              settings.patchSize, mesh.elements.size(), settings.solver.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
+  std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches, settings.patchSize,
+              mesh.elements.size(), settings.solver.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
               topology.tVertices().size());
   std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements)\n",
               summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,

@@ -15,30 +15,30 @@ struct DisplayOptions {
   double exposure = 0.0;     // stops
   std::string camera;        // preset or eye/target/up; empty: the file's camera, else front
   bool edges = false;
-  std::string view = "normal";  // normal, value, gradient, isolines, difference
+  std::string view = "normal";                // normal, value, gradient, isolines, difference
   std::string compareWith = "clough-tocher";  // difference view: the other method
-  std::string reference;        // difference view: an image to compare with instead
-  double differenceScale = 4.0;  // difference view: 8-bit steps at the ends of the colour bar
-  bool discontinuities = false;  // overlay discontinuity edges, coloured by order
-  bool tVertices = false;        // overlay T-vertex markers
-  bool repairTVertices = false;  // triangulate elements through their T-vertices before drawing
-  bool splitLines = false;       // overlay the Bezier pieces' boundaries
-  bool tessellationTriangles = false;  // overlay the generated triangles
-  double surface = 0.0;  // radiosity surface (fig. 9.13): its height as a fraction of the scene; 0 off
-  bool controlNet = false;  // with --surface: the Bezier control net
-  std::string variant = "affine";  // clough-tocher: affine or book
+  std::string reference;                      // difference view: an image to compare with instead
+  double differenceScale = 4.0;               // difference view: 8-bit steps at the ends of the colour bar
+  bool discontinuities = false;               // overlay discontinuity edges, coloured by order
+  bool tVertices = false;                     // overlay T-vertex markers
+  bool repairTVertices = false;               // triangulate elements through their T-vertices before drawing
+  bool splitLines = false;                    // overlay the Bezier pieces' boundaries
+  bool tessellationTriangles = false;         // overlay the generated triangles
+  double surface = 0.0;                // radiosity surface (fig. 9.13): its height as a fraction of the scene; 0 off
+  bool controlNet = false;             // with --surface: the Bezier control net
+  std::string variant = "affine";      // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
-  double elementSize = 0.0;        // scenes only; 0 picks a default
+  double elementSize = 0.0;            // scenes only; 0 picks a default
 };
 
 // render --method final-gather (C&W §9.3.1).
 struct GatherOptions {
-  int spp = 16;                       // samples (passes) per pixel, 1 .. kMaxGatherSpp
+  int spp = 16;  // samples (passes) per pixel, 1 .. kMaxGatherSpp
   uint64_t seed = 1;
   std::string interpolant = "gouraud";  // B^ under the integral: a view-independent method
-  int emitterSamples = 1;             // shadow rays per pixel per pass
-  std::string givenWithGlMethod;      // a gather option given without final-gather, for the error
+  int emitterSamples = 1;               // shadow rays per pixel per pass
+  std::string givenWithGlMethod;        // a gather option given without final-gather, for the error
 };
 constexpr const char* kFinalGather = "final-gather";  // the --method that renders by final gather
 
@@ -59,15 +59,15 @@ struct InfoOptions {
 struct SampleOptions {
   std::string file;
   std::string method = "clough-tocher";
-  std::string points;          // a file, '-' for standard input, or the points themselves
-  std::string diagonal = "02";  // gouraud: the quad diagonal, 02 or 13
-  std::string camera;           // scanline-gouraud: the view, as render --camera
-  std::string size = "1024x768";  // scanline-gouraud: the view's image size
-  std::string variant = "affine";  // clough-tocher: affine or book
+  std::string points;                  // a file, '-' for standard input, or the points themselves
+  std::string diagonal = "02";         // gouraud: the quad diagonal, 02 or 13
+  std::string camera;                  // scanline-gouraud: the view, as render --camera
+  std::string size = "1024x768";       // scanline-gouraud: the view's image size
+  std::string variant = "affine";      // clough-tocher: affine or book
   std::string tessellation = "exact";  // quadratic and C1 methods: exact (per pixel), adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
-  bool estimateGradients = false;  // ignore gradients stored in the file
-  double maxDistance = -1.0;       // world points farther from every element are errors
+  bool estimateGradients = false;      // ignore gradients stored in the file
+  double maxDistance = -1.0;           // world points farther from every element are errors
   double elementSize = 0.0;
 };
 
@@ -79,7 +79,7 @@ struct ViewerOptions {
   bool solve = false;  // start solving the scene in the background at once
   DisplayOptions display;
   GatherOptions gather = viewerGather();  // the final gather in the window ('9', --method final-gather)
-  bool framesWaitForSpp = false;  // --spp given: the last of --frames waits for the gather to reach it
+  bool framesWaitForSpp = false;          // --spp given: the last of --frames waits for the gather to reach it
 
   // As render's, but the gather converges until 1024 samples per pixel (the --spp a user can
   // wait for while looking; the panel changes it).
@@ -115,8 +115,8 @@ void checkGatherOptions(const GatherOptions& gather);
 // The final gather's image of the viewed file to a PNG at `out` (and its linear radiosity at
 // `linearOut`), with the display options' camera and exposure; prints the path and a summary.
 // Throws Error for a GL-only display option or a bad gather option.
-void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather,
-                       int width, int height, const std::string& out, const std::string& linearOut);
+void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather, int width,
+                       int height, const std::string& out, const std::string& linearOut);
 
 // "1024x768" -> width, height. Throws Error.
 void parseSize(const std::string& text, int& width, int& height);

@@ -23,16 +23,16 @@ namespace {
 
 using namespace radview;
 
-
 // `methods`: the --method names the command accepts.
 void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
   const bool finalGather = std::find(methods.begin(), methods.end(), kFinalGather) != methods.end();
-  command.add_option("--method", d.method,
-                     "Interpolant: flat, gouraud (hardware, on triangles), scanline-gouraud (on the polygons, as "
-                     "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher" +
-                         std::string(finalGather ? "; or final-gather (C&W §9.3.1: eq. 9.9 per pixel by ray "
-                                                   "casting, the interpolant --gather-interpolant under the integral)"
-                                                 : ""))
+  command
+      .add_option("--method", d.method,
+                  "Interpolant: flat, gouraud (hardware, on triangles), scanline-gouraud (on the polygons, as "
+                  "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher" +
+                      std::string(finalGather ? "; or final-gather (C&W §9.3.1: eq. 9.9 per pixel by ray "
+                                                "casting, the interpolant --gather-interpolant under the integral)"
+                                              : ""))
       ->check(methodChoice(methods))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
@@ -41,26 +41,30 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
       ->check(CLI::Range(-40.0, 40.0))
       ->capture_default_str();
   command.add_option("--camera", d.camera,
-                     "A preset (" + joined(cameraPresetNames()) + ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
-                     "default: the file's camera, else front");
+                     "A preset (" + joined(cameraPresetNames()) +
+                         ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
+                         "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
-  command.add_option("--view", d.view,
-                     "normal; or false colour: value (with a colour bar), gradient (its magnitude per pixel: "
-                     "Mach bands are jumps in it), isolines, difference (against --compare-with or --reference)")
+  command
+      .add_option("--view", d.view,
+                  "normal; or false colour: value (with a colour bar), gradient (its magnitude per pixel: "
+                  "Mach bands are jumps in it), isolines, difference (against --compare-with or --reference)")
       ->check(CLI::IsMember(gl::displayViewNames()))
       ->capture_default_str();
-  command.add_option("--compare-with", d.compareWith,
-                     "--view difference: the method to subtract, evaluated exactly per pixel (a tessellated "
-                     "method against itself shows its tessellation error)")
+  command
+      .add_option("--compare-with", d.compareWith,
+                  "--view difference: the method to subtract, evaluated exactly per pixel (a tessellated "
+                  "method against itself shows its tessellation error)")
       ->check(methodChoice(methodNames()))
       ->capture_default_str();
   command.add_option("--reference", d.reference,
                      "--view difference: an image to subtract instead, the size of the render: a float file "
                      "(.exr, from render --linear-out) is linear radiosity, shown through the same exposure; "
                      "an 8-bit one (.png) is display colour");
-  command.add_option("--difference-scale", d.differenceScale,
-                     "--view difference: the difference, in 8-bit steps of displayed luminance, at the ends of "
-                     "the colour bar")
+  command
+      .add_option("--difference-scale", d.differenceScale,
+                  "--view difference: the difference, in 8-bit steps of displayed luminance, at the ends of "
+                  "the colour bar")
       ->capture_default_str();
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
@@ -75,19 +79,22 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
   command.add_flag("--control-net", d.controlNet, "With --surface: draw the surface's Bezier control net (fig. 9.13)");
   command.add_flag("--repair-t-vertices", d.repairTVertices,
                    "Triangulate every element that has a T-vertex through it before drawing (Baum et al.)");
-  command.add_option("--tessellation", d.tessellation,
-                     "quadratic, c1-quadratic, clough-tocher: exact (evaluated per pixel), adaptive (GPU-"
-                     "tessellated until the display error is under --tolerance), or a fixed level 1..64")
+  command
+      .add_option("--tessellation", d.tessellation,
+                  "quadratic, c1-quadratic, clough-tocher: exact (evaluated per pixel), adaptive (GPU-"
+                  "tessellated until the display error is under --tolerance), or a fixed level 1..64")
       ->capture_default_str();
   command.add_option("--tolerance", d.tolerance, "Adaptive tessellation: largest display error, in 8-bit steps")
       ->check(CLI::Range(0.01, 100.0))
       ->capture_default_str();
-  command.add_option("--variant", d.variant,
-                     "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
+  command
+      .add_option("--variant", d.variant,
+                  "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
       ->check(CLI::IsMember({"affine", "book"}))
       ->capture_default_str();
-  command.add_option("--element-size", d.elementSize,
-                     "Scenes: edge length of the uniform mesh's elements (default: bounds diagonal / 40)")
+  command
+      .add_option("--element-size", d.elementSize,
+                  "Scenes: edge length of the uniform mesh's elements (default: bounds diagonal / 40)")
       ->check(CLI::Range(1e-12, 1e12));
 }
 
@@ -96,14 +103,16 @@ void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& sp
   command.add_option("--spp", g.spp, "final-gather: " + spp + " (1.." + std::to_string(kMaxGatherSpp) + ")")
       ->capture_default_str();
   command.add_option("--seed", g.seed, "final-gather: random seed (same seed, same image)")->capture_default_str();
-  command.add_option("--gather-interpolant", g.interpolant,
-                     "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9 (one that "
-                     "needs no view)")
+  command
+      .add_option("--gather-interpolant", g.interpolant,
+                  "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9 (one that "
+                  "needs no view)")
       ->check(methodChoice(methodNames(true)))
       ->capture_default_str();
-  command.add_option("--emitter-samples", g.emitterSamples,
-                     "final-gather: shadow rays to the emitters per pixel per pass, 1.." +
-                         std::to_string(kMaxEmitterSamples))
+  command
+      .add_option(
+          "--emitter-samples", g.emitterSamples,
+          "final-gather: shadow rays to the emitters per pixel per pass, 1.." + std::to_string(kMaxEmitterSamples))
       ->capture_default_str();
 }
 
@@ -113,21 +122,20 @@ int main(int argc, char** argv) {
   // Past a file size limit (ulimit -f) a write then fails with EFBIG, which radview reports with
   // the old file left intact (core/atomic_file.h), instead of SIGXFSZ killing it mid-write.
   std::signal(SIGXFSZ, SIG_IGN);
-  CLI::App app{"radview: a viewer for radiosity solutions (Cohen & Wallace §9.2-9.3).\n"
-               "radview [FILE] opens the viewer (the bundled Cornell box without FILE); where no display\n"
-               "exists it renders FILE headless to radview-<name>.png instead.",
-               "radview"};
+  CLI::App app{
+      "radview: a viewer for radiosity solutions (Cohen & Wallace §9.2-9.3).\n"
+      "radview [FILE] opens the viewer (the bundled Cornell box without FILE); where no display\n"
+      "exists it renders FILE headless to radview-<name>.png instead.",
+      "radview"};
   app.footer(std::string("\n") + shortcutHelp());
   app.require_subcommand(0, 1);
   // One line, like every other radview error.
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return std::string("radview: ") + e.what() + " (see --help)\n";
-  });
+  app.failure_message(
+      [](const CLI::App*, const CLI::Error& e) { return std::string("radview: ") + e.what() + " (see --help)\n"; });
 
   ViewerOptions viewer;
   app.add_option("file", viewer.file, "A glTF scene (.gltf/.glb) or a radview solution file");
-  app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")
-      ->check(CLI::Range(1, 1000000000));
+  app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
   app.add_flag("--solve", viewer.solve,
@@ -142,8 +150,7 @@ int main(int argc, char** argv) {
 
   RenderOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "Render FILE headless (EGL) to a PNG");
-  renderCommand->add_option("file", render.file, "A glTF scene or radview solution file")
-      ->required();
+  renderCommand->add_option("file", render.file, "A glTF scene or radview solution file")->required();
   renderCommand->add_option("--out,-o", render.out, "Output PNG")->capture_default_str();
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   renderCommand->add_option("--linear-out", render.linearOut,
@@ -152,12 +159,12 @@ int main(int argc, char** argv) {
   addGatherOptions(*renderCommand, render.gather, "samples per pixel");
 
   InfoOptions info;
-  CLI::App* infoCommand = app.add_subcommand("info", "Print what FILE holds: polygons, emitters, mesh, T-vertices, "
-                                                     "discontinuity edges, bounds");
-  infoCommand->add_option("file", info.file, "A glTF scene or radview solution file")
-      ->required();
-  infoCommand->add_option("--element-size", info.elementSize,
-                          "Scenes: element size of the uniform mesh that is reported")
+  CLI::App* infoCommand = app.add_subcommand("info",
+                                             "Print what FILE holds: polygons, emitters, mesh, T-vertices, "
+                                             "discontinuity edges, bounds");
+  infoCommand->add_option("file", info.file, "A glTF scene or radview solution file")->required();
+  infoCommand
+      ->add_option("--element-size", info.elementSize, "Scenes: element size of the uniform mesh that is reported")
       ->check(CLI::Range(1e-12, 1e12));
 
   SampleOptions sample;
@@ -167,8 +174,7 @@ int main(int argc, char** argv) {
   sampleCommand->add_option("--method", sample.method, "Interpolant")
       ->check(methodChoice(methodNames()))
       ->capture_default_str();
-  sampleCommand->add_option("--camera", sample.camera,
-                            "scanline-gouraud: the view it is seen in, as render --camera");
+  sampleCommand->add_option("--camera", sample.camera, "scanline-gouraud: the view it is seen in, as render --camera");
   sampleCommand->add_option("--size", sample.size, "scanline-gouraud: the image size of that view, WIDTHxHEIGHT")
       ->capture_default_str();
   sampleCommand
@@ -180,16 +186,18 @@ int main(int argc, char** argv) {
   sampleCommand->add_option("--diagonal", sample.diagonal, "gouraud: cut quads along corners 02 or 13")
       ->check(CLI::IsMember({"02", "13"}))
       ->capture_default_str();
-  sampleCommand->add_option("--variant", sample.variant,
-                            "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book "
-                            "(edge normal)")
+  sampleCommand
+      ->add_option("--variant", sample.variant,
+                   "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book "
+                   "(edge normal)")
       ->check(CLI::IsMember({"affine", "book"}))
       ->capture_default_str();
   sampleCommand->add_flag("--estimate-gradients", sample.estimateGradients,
                           "Estimate vertex gradients even when the file stores them");
-  sampleCommand->add_option("--max-distance", sample.maxDistance,
-                            "World points farther than this from every element are errors (default: 1e-3 of "
-                            "the bounds diagonal)")
+  sampleCommand
+      ->add_option("--max-distance", sample.maxDistance,
+                   "World points farther than this from every element are errors (default: 1e-3 of "
+                   "the bounds diagonal)")
       ->check(CLI::NonNegativeNumber);
   sampleCommand->add_option("--element-size", sample.elementSize, "Scenes: element size of the uniform mesh")
       ->check(CLI::Range(1e-12, 1e12));

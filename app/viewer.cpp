@@ -42,37 +42,76 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   ViewerState& s = *static_cast<Input*>(glfwGetWindowUserPointer(window))->state;
   // GLFW's number keys are their characters' codes.
-  if (const std::optional<Method> method = key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
+  if (const std::optional<Method> method =
+          key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
     s.settings.method = *method;
     s.gather.on = false;
     return;
   }
   switch (key) {
-    case GLFW_KEY_9: s.gather.on = true; break;
-    case GLFW_KEY_V:
-      s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book ? CloughTocherVariant::AffineInvariant
-                                                                                    : CloughTocherVariant::Book;
+    case GLFW_KEY_9:
+      s.gather.on = true;
       break;
-    case GLFW_KEY_P: s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect; break;
-    case GLFW_KEY_E: s.settings.elementEdges = !s.settings.elementEdges; break;
-    case GLFW_KEY_D: s.settings.discontinuityEdges = !s.settings.discontinuityEdges; break;
-    case GLFW_KEY_T: s.settings.tVertices = !s.settings.tVertices; break;
-    case GLFW_KEY_C: s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4); break;
-    case GLFW_KEY_L: s.settings.splitLines = !s.settings.splitLines; break;
-    case GLFW_KEY_H: s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15; break;
-    case GLFW_KEY_W: s.settings.tessellationTriangles = !s.settings.tessellationTriangles; break;
-    case GLFW_KEY_G: (s.solving ? s.cancelSolveRequested : s.solveRequested) = true; break;
-    case GLFW_KEY_N: s.settings.controlNet = !s.settings.controlNet; break;
-    case GLFW_KEY_B: s.settings.repairTVertices = !s.settings.repairTVertices; break;
-    case GLFW_KEY_R: rotateView45(s); break;
-    case GLFW_KEY_F: resetCamera(s); break;
-    case GLFW_KEY_S: s.screenshotRequested = true; break;
+    case GLFW_KEY_V:
+      s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book
+                                    ? CloughTocherVariant::AffineInvariant
+                                    : CloughTocherVariant::Book;
+      break;
+    case GLFW_KEY_P:
+      s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect;
+      break;
+    case GLFW_KEY_E:
+      s.settings.elementEdges = !s.settings.elementEdges;
+      break;
+    case GLFW_KEY_D:
+      s.settings.discontinuityEdges = !s.settings.discontinuityEdges;
+      break;
+    case GLFW_KEY_T:
+      s.settings.tVertices = !s.settings.tVertices;
+      break;
+    case GLFW_KEY_C:
+      s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4);
+      break;
+    case GLFW_KEY_L:
+      s.settings.splitLines = !s.settings.splitLines;
+      break;
+    case GLFW_KEY_H:
+      s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15;
+      break;
+    case GLFW_KEY_W:
+      s.settings.tessellationTriangles = !s.settings.tessellationTriangles;
+      break;
+    case GLFW_KEY_G:
+      (s.solving ? s.cancelSolveRequested : s.solveRequested) = true;
+      break;
+    case GLFW_KEY_N:
+      s.settings.controlNet = !s.settings.controlNet;
+      break;
+    case GLFW_KEY_B:
+      s.settings.repairTVertices = !s.settings.repairTVertices;
+      break;
+    case GLFW_KEY_R:
+      rotateView45(s);
+      break;
+    case GLFW_KEY_F:
+      resetCamera(s);
+      break;
+    case GLFW_KEY_S:
+      s.screenshotRequested = true;
+      break;
     case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD: s.settings.exposure += 0.5; break;
+    case GLFW_KEY_KP_ADD:
+      s.settings.exposure += 0.5;
+      break;
     case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT: s.settings.exposure -= 0.5; break;
-    case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    default: break;
+    case GLFW_KEY_KP_SUBTRACT:
+      s.settings.exposure -= 0.5;
+      break;
+    case GLFW_KEY_ESCAPE:
+      glfwSetWindowShouldClose(window, GLFW_TRUE);
+      break;
+    default:
+      break;
   }
 }
 
@@ -100,8 +139,10 @@ void handleDrag(GLFWwindow* window, Input& input) {
     int width = 1, height = 1;
     glfwGetWindowSize(window, &width, &height);
     const double dx = (x - input.lastX) / height, dy = (y - input.lastY) / height;
-    if (left) orbit(input.state->camera, dx * 3.0, dy * 3.0);
-    else pan(input.state->camera, dx, dy);
+    if (left)
+      orbit(input.state->camera, dx * 3.0, dy * 3.0);
+    else
+      pan(input.state->camera, dx, dy);
   }
   input.lastX = x;
   input.lastY = y;

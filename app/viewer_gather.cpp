@@ -16,8 +16,7 @@ constexpr auto kSettle = std::chrono::milliseconds(150);
 }  // namespace
 
 void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, uint64_t meshVersion,
-                          const Camera& camera, int width, int height, gl::MeshRenderer& renderer,
-                          bool waitForTarget) {
+                          const Camera& camera, int width, int height, gl::MeshRenderer& renderer, bool waitForTarget) {
   if (!controls.on) {
     if (gather_.settings()) gather_.cancel();
     renderer.clearShownImage();

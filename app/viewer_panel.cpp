@@ -111,7 +111,10 @@ void drawGatherControls(ViewerState& state) {
   } else if (p.spp == 0) {
     ImGui::TextDisabled("starts when the view is still");
   } else {
-    ImGui::Text("%d spp%s, %.1f s, %.2fM rays/s", p.spp, p.reachedTarget ? " (done)" : g.paused ? " (paused)" : "",
+    ImGui::Text("%d spp%s, %.1f s, %.2fM rays/s", p.spp,
+                p.reachedTarget ? " (done)"
+                : g.paused      ? " (paused)"
+                                : "",
                 p.seconds, raysPerSecond * 1e-6);
   }
   const char* method = methodInfo(state.settings.method).label.c_str();
@@ -128,8 +131,9 @@ void drawSolveControls(ViewerState& state) {
     state.solveRequested = true;
   }
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
-                      "the partial solution is shown as it converges (with the ambient term)");
+    ImGui::SetTooltip(
+        "Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
+        "the partial solution is shown as it converges (with the ambient term)");
   ImGui::TextWrapped("%s", state.solveStatus.empty() ? "showing direct light, unoccluded" : state.solveStatus.c_str());
   char buffer[1024];
   std::snprintf(buffer, sizeof buffer, "%s", state.solutionPath.c_str());
@@ -161,7 +165,8 @@ void drawColourBarLabels(const ViewerState& state) {
   }
   const char* unit = view == gl::DisplayView::Value ? "displayed luminance" : "8-bit steps";
   const ImVec2 extent = ImGui::CalcTextSize(unit);
-  draw->AddText(ImVec2(size.x - 20 - extent.x - 2, size.y * 0.5f - extent.y * 2.0f), IM_COL32(255, 255, 255, 200), unit);
+  draw->AddText(ImVec2(size.x - 20 - extent.x - 2, size.y * 0.5f - extent.y * 2.0f), IM_COL32(255, 255, 255, 200),
+                unit);
 }
 
 void drawPanel(ViewerState& state) {
@@ -172,7 +177,7 @@ void drawPanel(ViewerState& state) {
 
   const ViewedFile& viewed = state.viewed;
   ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
-  const char* shown = viewed.file.isSolution          ? "solution"
+  const char* shown = viewed.file.isSolution      ? "solution"
                       : state.solveStatus.empty() ? "scene (direct light)"
                                                   : "scene (radiosity solve)";
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
@@ -204,8 +209,7 @@ void drawPanel(ViewerState& state) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Edge normal, as the text reads; off: centroid to centroid (affine invariant, default)");
   }
-  if (state.settings.method == Method::ScanlineGouraud)
-    ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
+  if (state.settings.method == Method::ScanlineGouraud) ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
   if (state.settings.method == Method::Bilinear) ImGui::TextDisabled("exact per pixel");
   if (methodInfo(state.settings.method).bezierPieces) {
     // Exact per pixel, a fixed tessellation level, or the adaptive level (C&W 9.2).
@@ -266,11 +270,11 @@ void drawPanel(ViewerState& state) {
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
-  if (methodInfo(state.settings.method).c1)
-    ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
+  if (methodInfo(state.settings.method).c1) ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
   if (methodInfo(state.settings.method).bezierPieces) {
     bool surface = state.settings.surfaceHeight > 0.0;
-    if (ImGui::Checkbox("Radiosity surface, fig. 9.13 [H]", &surface)) state.settings.surfaceHeight = surface ? 0.15 : 0.0;
+    if (ImGui::Checkbox("Radiosity surface, fig. 9.13 [H]", &surface))
+      state.settings.surfaceHeight = surface ? 0.15 : 0.0;
     if (surface) {
       float height = float(state.settings.surfaceHeight);
       ImGui::PushItemWidth(200);

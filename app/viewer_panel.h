@@ -16,7 +16,7 @@ namespace radview {
 struct GatherControls {
   bool on = false;
   Method interpolant = Method::Gouraud;  // B^ under the integral of eq. 9.9
-  int emitterSamples = 1;               // shadow rays per pixel per pass
+  int emitterSamples = 1;                // shadow rays per pixel per pass
   uint64_t seed = 1;
   int targetSpp = 1024;  // it stops at this many samples per pixel
   bool paused = false;
@@ -28,24 +28,24 @@ struct ViewerState {
   Camera camera;
   Camera homeCamera;  // the camera the file opened with ('F' returns to it)
   gl::RenderSettings settings;
-  std::string status;        // last message: file opened, screenshot written, error
-  std::string pathToOpen;    // panel's "open" field
+  std::string status;      // last message: file opened, screenshot written, error
+  std::string pathToOpen;  // panel's "open" field
   bool openRequested = false;
   bool screenshotRequested = false;
-  int rollSteps = 0;         // 45-degree view rotations applied (fig. 9.8)
+  int rollSteps = 0;  // 45-degree view rotations applied (fig. 9.8)
   double cpuFrameMs = 0.0;
   double gpuFrameMs = 0.0;
   size_t triangles = 0;
   gl::TessellationStatistics tessellation;  // of the last quadratic or C1 frame
-  std::string referencePath;        // panel's reference image field (difference view)
-  bool referenceRequested = false;  // load referencePath as the reference image
-  std::string difference;           // the difference view's statistics, when the sizes allow
+  std::string referencePath;                // panel's reference image field (difference view)
+  bool referenceRequested = false;          // load referencePath as the reference image
+  std::string difference;                   // the difference view's statistics, when the sizes allow
   // The background solve (scenes only): requests from the panel, and what it reports.
   bool solveRequested = false;
   bool cancelSolveRequested = false;
   bool solving = false;
   std::string solveStatus;
-  std::string solutionPath;            // where "Write solution" writes the mesh shown
+  std::string solutionPath;  // where "Write solution" writes the mesh shown
   bool writeSolutionRequested = false;
   GatherControls gather;
 };

@@ -35,15 +35,16 @@ inline std::vector<Placement> extremePlacements() {
 // beside u = 1/4 (a column of slivers an eighth long: aspect 1e4) and one 1e-6 beside u = 3/4
 // (a sliver the face's length: aspect 1e6).
 inline const std::vector<double>& extremeGridU() {
-  static const std::vector<double> u = {0, 0.125, 0.25, 0.25 + 1.25e-5, 0.375, 0.5, 0.625, 0.75, 0.75 + 1e-6,
-                                        0.875, 1};
+  static const std::vector<double> u = {0, 0.125, 0.25, 0.25 + 1.25e-5, 0.375, 0.5, 0.625, 0.75, 0.75 + 1e-6, 0.875, 1};
   return u;
 }
 
 // Radiosity at a point of the unit box: 10^(-8 + 16 (x + y + z) / 3), 1e-8 at the corner (0,0,0)
 // and 1e8 at (1,1,1), a factor of about 20 between the corners of a cell. Grey, so that any
 // colour in a displayed normal view is garbage.
-inline double extremeRadiosity(const Vec3& unit) { return std::pow(10.0, -8.0 + 16.0 * (unit.x + unit.y + unit.z) / 3.0); }
+inline double extremeRadiosity(const Vec3& unit) {
+  return std::pow(10.0, -8.0 + 16.0 * (unit.x + unit.y + unit.z) / 3.0);
+}
 
 // The closed box, each face facing inwards and cut along extremeGridU() by eighths: cells split
 // in four (leaving T-vertices on their unsplit neighbours' edges, some on the aspect-1e4

@@ -57,8 +57,8 @@ EdgeStencils edgeStencils(const RadiosityMesh& mesh, const std::vector<int32_t>&
     const Element &ea = mesh.elements[a], &eb = mesh.elements[b];
     const bool emits = mesh.materials[ea.material].isEmitter() || mesh.materials[eb.material].isEmitter();
     const bool coplanar = glm::dot(mesh.elementNormal(a), mesh.elementNormal(b)) > 1.0 - 1e-9 &&
-                          std::abs(glm::dot(mesh.elementNormal(a), mesh.nodes[eb.corners[0]].position -
-                                                                       mesh.nodes[ea.corners[0]].position)) <
+                          std::abs(glm::dot(mesh.elementNormal(a),
+                                            mesh.nodes[eb.corners[0]].position - mesh.nodes[ea.corners[0]].position)) <
                               1e-9 * mesh.bounds().diagonal();
     if (!emits && coplanar) it->second = continuity.between(uint32_t(a), uint32_t(b));
     return it->second;

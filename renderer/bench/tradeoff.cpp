@@ -41,9 +41,8 @@ std::string markdownTable(const std::vector<TradeoffRow>& rows) {
   for (const TradeoffRow& r : rows) {
     const std::string b = r.pareto ? "**" : "";
     out << "| " << b << r.method << b << " | " << b << r.setting << b << " | " << number(r.frameMs) << " | "
-        << r.triangles << " | " << number(r.rmse) << " | " << number(r.maxError) << " | " << b
-        << number(r.displayRmse) << b << " | " << number(r.displayMax) << " | " << number(r.machBands) << " | "
-        << number(r.c0Kinks) << " |\n";
+        << r.triangles << " | " << number(r.rmse) << " | " << number(r.maxError) << " | " << b << number(r.displayRmse)
+        << b << " | " << number(r.displayMax) << " | " << number(r.machBands) << " | " << number(r.c0Kinks) << " |\n";
   }
   return out.str();
 }
@@ -53,10 +52,9 @@ std::string csvTable(const std::vector<TradeoffRow>& rows) {
   out << "method,setting,frame_ms,triangles,rmse,max,display_rmse_steps,display_max_steps,mach_steps_per_px,"
          "c0_kink_steps_per_px,pareto\n";
   for (const TradeoffRow& r : rows)
-    out << r.method << "," << r.setting << "," << number(r.frameMs, 6) << "," << r.triangles << ","
-        << number(r.rmse, 6) << "," << number(r.maxError, 6) << "," << number(r.displayRmse, 6) << ","
-        << number(r.displayMax, 6) << "," << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << ","
-        << (r.pareto ? 1 : 0) << "\n";
+    out << r.method << "," << r.setting << "," << number(r.frameMs, 6) << "," << r.triangles << "," << number(r.rmse, 6)
+        << "," << number(r.maxError, 6) << "," << number(r.displayRmse, 6) << "," << number(r.displayMax, 6) << ","
+        << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << "," << (r.pareto ? 1 : 0) << "\n";
   return out.str();
 }
 

@@ -8,12 +8,12 @@
 namespace radview {
 
 struct TradeoffRow {
-  std::string method;   // e.g. "clough-tocher"
-  std::string setting;  // "per pixel", "level 4", "adaptive 0.5", ...
-  double frameMs = 0.0;           // GPU time, median over frames
-  size_t triangles = 0;           // drawn or generated
-  double rmse = 0.0, maxError = 0.0;                // luminance of B against the reference, radiometric
-  double displayRmse = 0.0, displayMax = 0.0;       // displayed luminance, 8-bit steps
+  std::string method;                          // e.g. "clough-tocher"
+  std::string setting;                         // "per pixel", "level 4", "adaptive 0.5", ...
+  double frameMs = 0.0;                        // GPU time, median over frames
+  size_t triangles = 0;                        // drawn or generated
+  double rmse = 0.0, maxError = 0.0;           // luminance of B against the reference, radiometric
+  double displayRmse = 0.0, displayMax = 0.0;  // displayed luminance, 8-bit steps
   double machBands = 0.0;  // mean gradient jump across untagged element edges, 8-bit steps per pixel
   double c0Kinks = 0.0;    // the same across edges tagged C0 (real kinks: a method should keep them)
   bool pareto = false;     // no other row is both faster and more accurate (display RMSE)

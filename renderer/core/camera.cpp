@@ -24,7 +24,9 @@ void fitClipPlanes(Camera& camera, const Bounds& bounds) {
   camera.zNear = std::max(distance - radius * 1.01, camera.zFar * 1e-4);
 }
 
-std::vector<std::string> cameraPresetNames() { return {"file", "front", "back", "left", "right", "top", "bottom", "iso"}; }
+std::vector<std::string> cameraPresetNames() {
+  return {"file", "front", "back", "left", "right", "top", "bottom", "iso"};
+}
 
 namespace {
 
@@ -92,7 +94,8 @@ Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::
   } else if (name.find('/') != std::string::npos) {
     c = fromEyeTargetUp(name);
   } else {
-    throw Error("--camera '" + spec + "': unknown preset (use one of " + joined(cameraPresetNames()) + ", or ex,ey,ez/tx,ty,tz[/ux,uy,uz])");
+    throw Error("--camera '" + spec + "': unknown preset (use one of " + joined(cameraPresetNames()) +
+                ", or ex,ey,ez/tx,ty,tz[/ux,uy,uz])");
   }
   fitClipPlanes(c, bounds);
   return c;

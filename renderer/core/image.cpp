@@ -24,8 +24,7 @@ void writeRgba(const std::string& path, int width, int height, OIIO::TypeDesc ty
   std::vector<unsigned char> encoded;
   OIIO::Filesystem::IOVecOutput memory(encoded);
   OIIO::ImageSpec spec(width, height, 4, type);
-  if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(type, rgba.data()) ||
-      !out->close())
+  if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(type, rgba.data()) || !out->close())
     throw Error(path, "cannot encode the image: " + out->geterror() + "; no file was written");
   writeFileAtomically(path, std::string(encoded.begin(), encoded.end()));
 }
@@ -76,8 +75,8 @@ ReferenceImage readReferenceImage(const std::string& path) {
   reference.path = path;
   LinearImage& image = reference.pixels;
   // The file's own pixel type says what it holds: floats radiosity, integers display colour.
-  reference.linear =
-      readRgba<float>(path, OIIO::TypeDesc::FLOAT, 1.0f, image.width, image.height, image.rgba).format.is_floating_point();
+  reference.linear = readRgba<float>(path, OIIO::TypeDesc::FLOAT, 1.0f, image.width, image.height, image.rgba)
+                         .format.is_floating_point();
   return reference;
 }
 

@@ -21,7 +21,7 @@ struct LinearImage {
 // Image files are written whole or not at all (core/atomic_file.h): a failed write throws Error
 // naming the path and leaves any file that was there unchanged.
 void writePng(const Image& image, const std::string& path);
-Image readImage(const std::string& path);                     // any format OpenImageIO reads, as RGBA8
+Image readImage(const std::string& path);  // any format OpenImageIO reads, as RGBA8
 // Linear radiosity as a float file (OpenEXR for .exr; any float format OpenImageIO writes),
 // alpha kept as coverage. Throws Error naming the path.
 void writeLinearImage(const LinearImage& image, const std::string& path);

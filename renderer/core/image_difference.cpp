@@ -18,9 +18,9 @@ bool coveredAndFinite(const float* p) {
 DisplayDifference displayDifference(const LinearImage& render, const ReferenceImage& reference, double exposureScale) {
   const LinearImage& other = reference.pixels;
   if (render.width != other.width || render.height != other.height)
-    throw Error(reference.path, "the reference is " + std::to_string(other.width) + "x" +
-                                    std::to_string(other.height) + ", the render " + std::to_string(render.width) +
-                                    "x" + std::to_string(render.height) + ": render at the reference's size");
+    throw Error(reference.path, "the reference is " + std::to_string(other.width) + "x" + std::to_string(other.height) +
+                                    ", the render " + std::to_string(render.width) + "x" +
+                                    std::to_string(render.height) + ": render at the reference's size");
   DisplayDifference d;
   double sum = 0.0, sumSquares = 0.0;
   for (size_t i = 0; i < size_t(render.width) * render.height; ++i) {

@@ -9,10 +9,10 @@
 namespace radview {
 
 struct DisplayDifference {
-  size_t pixels = 0;      // compared: covered in both images
-  double rmse = 0.0;      // root mean square of (render - reference)
+  size_t pixels = 0;        // compared: covered in both images
+  double rmse = 0.0;        // root mean square of (render - reference)
   double meanSigned = 0.0;  // mean of (render - reference): a bias, e.g. an exposure mismatch
-  double maxAbs = 0.0;    // the largest |render - reference|
+  double maxAbs = 0.0;      // the largest |render - reference|
 };
 
 // Compares a linear render (alpha > 0 where covered, readLinear) shown at `exposureScale` with

@@ -58,10 +58,14 @@ std::optional<uint64_t> parseByteSize(const std::string& text) {
   if (digits == 0) return std::nullopt;
   const std::string suffix = text.substr(digits);
   int shift = 0;
-  if (suffix == "K" || suffix == "k") shift = 10;
-  else if (suffix == "M" || suffix == "m") shift = 20;
-  else if (suffix == "G" || suffix == "g") shift = 30;
-  else if (!suffix.empty()) return std::nullopt;
+  if (suffix == "K" || suffix == "k")
+    shift = 10;
+  else if (suffix == "M" || suffix == "m")
+    shift = 20;
+  else if (suffix == "G" || suffix == "g")
+    shift = 30;
+  else if (!suffix.empty())
+    return std::nullopt;
   const uint64_t value = std::stoull(text.substr(0, digits));
   if (value > (std::numeric_limits<uint64_t>::max() >> shift)) return std::nullopt;
   return value << shift;
@@ -84,15 +88,13 @@ std::optional<uint64_t> availableMemoryBytes() {
   return available;
 }
 
-void checkMemory(const std::string& where, const std::string& what, uint64_t bytes,
-                 std::optional<uint64_t> available) {
+void checkMemory(const std::string& where, const std::string& what, uint64_t bytes, std::optional<uint64_t> available) {
   if (!available || bytes <= *available) return;
   const bool overridden = std::getenv(kOverrideVariable) != nullptr;
-  throw Error(where, "needs about " + readable(bytes) + " of memory for " + what + ", more than the " +
-                         readable(*available) +
-                         (overridden ? " that " + std::string(kOverrideVariable) + " allows"
-                                     : " this machine has available") +
-                         "; use a smaller size");
+  throw Error(where,
+              "needs about " + readable(bytes) + " of memory for " + what + ", more than the " + readable(*available) +
+                  (overridden ? " that " + std::string(kOverrideVariable) + " allows" : " this machine has available") +
+                  "; use a smaller size");
 }
 
 }  // namespace radview

@@ -54,7 +54,8 @@ std::optional<double> parseFiniteNumber(std::string_view text) {
   text = withoutPlus(text);
   double v = 0.0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), v, std::chars_format::general);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+  if (text.empty() || error != std::errc() || end != text.data() + text.size() || !std::isfinite(v))
+    return std::nullopt;
   return v;
 }
 

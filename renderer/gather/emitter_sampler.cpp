@@ -25,8 +25,8 @@ EmitterSampler::EmitterSampler(const RadiosityMesh& mesh) {
     const Vec3 normal = unitNormal(corners);
     if (normal == Vec3(0.0)) continue;
     for (const auto& t : triangulatePolygon(corners)) {
-      const Triangle triangle{corners[size_t(t[0])], corners[size_t(t[1])], corners[size_t(t[2])], normal,
-                              material.E, 0.0};
+      const Triangle triangle{
+          corners[size_t(t[0])], corners[size_t(t[1])], corners[size_t(t[2])], normal, material.E, 0.0};
       const double a = 0.5 * glm::length(glm::cross(triangle.b - triangle.a, triangle.c - triangle.a));
       if (!(a > 0.0)) continue;
       triangles_.push_back(triangle);
@@ -44,9 +44,9 @@ EmitterSampler::EmitterSampler(const RadiosityMesh& mesh) {
 
 EmitterSample EmitterSampler::sample(double uPick, double u1, double u2) const {
   RADVIEW_CHECK(!triangles_.empty());
-  const size_t i = std::min(size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), uPick) -
-                                   cumulative_.begin()),
-                            triangles_.size() - 1);
+  const size_t i =
+      std::min(size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), uPick) - cumulative_.begin()),
+               triangles_.size() - 1);
   const Triangle& t = triangles_[i];
   // Uniform on the triangle (pbrt's UniformSampleTriangle).
   const double s = std::sqrt(u1);

@@ -29,8 +29,8 @@ bool operator==(const GatherSettings& a, const GatherSettings& b) {
   const Camera &ca = a.camera, &cb = b.camera;
   return a.interpolant == b.interpolant && ia.diagonal == ib.diagonal && ia.cloughTocher == ib.cloughTocher &&
          ia.useStoredGradients == ib.useStoredGradients && a.seed == b.seed && a.width == b.width &&
-         a.height == b.height && ca.eye == cb.eye && ca.target == cb.target && ca.up == cb.up &&
-         ca.yfov == cb.yfov && ca.zNear == cb.zNear && ca.zFar == cb.zFar && a.emitterSamples == b.emitterSamples;
+         a.height == b.height && ca.eye == cb.eye && ca.target == cb.target && ca.up == cb.up && ca.yfov == cb.yfov &&
+         ca.zNear == cb.zNear && ca.zFar == cb.zFar && a.emitterSamples == b.emitterSamples;
 }
 
 FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings)

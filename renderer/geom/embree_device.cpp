@@ -23,8 +23,8 @@ void EmbreeDevice::check(const char* what) {
   const RTCError code = rtcGetDeviceError(device_);
   const std::lock_guard<std::mutex> lock(mutex_);
   if (code == RTC_ERROR_NONE && message_.empty()) return;
-  throw Error(user_ + ": " + what + " failed: " +
-              (message_.empty() ? "Embree error " + std::to_string(int(code)) : message_));
+  throw Error(user_ + ": " + what +
+              " failed: " + (message_.empty() ? "Embree error " + std::to_string(int(code)) : message_));
 }
 
 }  // namespace radview

@@ -14,7 +14,6 @@ namespace radview {
 
 namespace {
 
-
 Vec3 vertexMean(const std::vector<Vec3>& vertices) {
   Vec3 sum(0.0);
   for (const Vec3& p : vertices) sum += p;

@@ -19,8 +19,7 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 // Vertex info: the index of the input vertex. Face info: nesting level, -1 until marked.
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
 using FaceBase =
-    CGAL::Constrained_triangulation_face_base_2<Kernel,
-                                                CGAL::Triangulation_face_base_with_info_2<int, Kernel>>;
+    CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<int, Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 // No_constraint_intersection_tag: crossing edges throw instead of being split at a new vertex.
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::No_constraint_intersection_tag>;
@@ -76,8 +75,7 @@ std::vector<std::array<int, 3>> constrainedDelaunayTriangulation(const std::vect
   markNestingLevels(cdt);
   std::vector<std::array<int, 3>> triangles;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info() % 2 == 1)
-      triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+    if (f->info() % 2 == 1) triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
   // A simple polygon of n vertices has n - 2 triangles; anything else means it was not simple.
   if (static_cast<int>(triangles.size()) != n - 2)
     notSimple(std::to_string(triangles.size()) + " triangles inside instead of " + std::to_string(n - 2));

@@ -38,9 +38,10 @@ BezierPass::BezierPass() {
   glCreateBuffers(1, &vbo_);
   glVertexArrayVertexBuffer(vao_, 0, vbo_, 0, sizeof(BezierVertex));
   for (GLuint attribute = 0; attribute < 10; ++attribute) {
-    const GLuint offset = attribute == 0   ? offsetof(BezierVertex, position)
-                          : attribute == 1 ? offsetof(BezierVertex, beta)
-                                           : GLuint(offsetof(BezierVertex, control) + (attribute - 2) * sizeof(glm::vec4));
+    const GLuint offset = attribute == 0 ? offsetof(BezierVertex, position)
+                          : attribute == 1
+                              ? offsetof(BezierVertex, beta)
+                              : GLuint(offsetof(BezierVertex, control) + (attribute - 2) * sizeof(glm::vec4));
     glEnableVertexArrayAttrib(vao_, attribute);
     glVertexArrayAttribFormat(vao_, attribute, attribute < 2 ? 3 : 4, GL_FLOAT, GL_FALSE, offset);
     glVertexArrayAttribBinding(vao_, attribute, 0);
@@ -139,11 +140,10 @@ void BezierPass::updateLevels(const BezierEvaluation& evaluation) {
   // fine level over a large mesh would keep the GPU busy for hours.
   uint64_t triangles = 0;
   for (const TessellationLevels& l : levels) triangles += trianglesOf(l);
-  checkLimit("--tessellation " + (evaluation.tessellation == kAdaptiveTessellation
-                                      ? std::string("adaptive")
-                                      : std::to_string(evaluation.tessellation)),
-             triangles, kMaxTessellatedTriangles,
-             "triangles a frame from " + std::to_string(patches) + " Bezier pieces");
+  checkLimit(
+      "--tessellation " + (evaluation.tessellation == kAdaptiveTessellation ? std::string("adaptive")
+                                                                            : std::to_string(evaluation.tessellation)),
+      triangles, kMaxTessellatedTriangles, "triangles a frame from " + std::to_string(patches) + " Bezier pieces");
   levels_ = std::move(levels);
   std::vector<glm::vec4> perVertex;
   perVertex.reserve(3 * patches);
@@ -164,7 +164,8 @@ double BezierPass::drawTessellated(const BezierEvaluation& evaluation, size_t& d
   double levelSum = 0.0;
   while (first < patches) {
     size_t count = 0, triangles = 0;
-    while (first + count < patches && (count == 0 || triangles + trianglesOf(levels_[first + count]) <= kMaxTrianglesPerDraw)) {
+    while (first + count < patches &&
+           (count == 0 || triangles + trianglesOf(levels_[first + count]) <= kMaxTrianglesPerDraw)) {
       triangles += trianglesOf(levels_[first + count]);
       levelSum += levels_[first + count].inner;
       ++count;

@@ -34,8 +34,8 @@ inline constexpr int kAdaptiveTessellation = -1;
 // What the last draw generated.
 struct TessellationStatistics {
   size_t patches = 0;
-  size_t draws = 0;             // one per batch (see BezierPass::draw)
-  double averageLevel = 0.0;    // inner level; 1 for per pixel
+  size_t draws = 0;               // one per batch (see BezierPass::draw)
+  double averageLevel = 0.0;      // inner level; 1 for per pixel
   size_t trianglesGenerated = 0;  // GL_PRIMITIVES_GENERATED of the last draw whose query is ready
 };
 
@@ -72,7 +72,7 @@ class BezierPass {
       ShaderProgram({"tessellated.vert", "tessellated.tesc", "tessellated.tese", "tessellated.frag"}, {"DEGREE 3"})};
   GLuint vao_ = 0, vbo_ = 0, levelsVbo_ = 0;
   std::vector<BezierVertex> vertices_;
-  std::vector<TessellationLevels> levels_;  // per patch, as uploaded to levelsVbo_
+  std::vector<TessellationLevels> levels_;     // per patch, as uploaded to levelsVbo_
   std::array<double, 3> levelsFor_{-2, 0, 0};  // the tessellation, exposure scale, tolerance of levels_
   int degree_ = 3;
   std::array<GLuint, 2> primitiveQueries_{};

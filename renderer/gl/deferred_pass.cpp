@@ -47,8 +47,8 @@ void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
     fill(first, count, corners.data(), nets.data());
     glNamedBufferSubData(corners_, GLintptr(3 * first * sizeof(glm::vec3)), GLsizeiptr(3 * count * sizeof(glm::vec3)),
                          corners.data());
-    glNamedBufferSubData(nets_, GLintptr(vec4s * first * sizeof(glm::vec4)), GLsizeiptr(vec4s * count * sizeof(glm::vec4)),
-                         nets.data());
+    glNamedBufferSubData(nets_, GLintptr(vec4s * first * sizeof(glm::vec4)),
+                         GLsizeiptr(vec4s * count * sizeof(glm::vec4)), nets.data());
   }
   glTextureBuffer(netsTexture_, GL_RGBA32F, nets_);
   triangles_ = triangles;

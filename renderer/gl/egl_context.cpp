@@ -14,7 +14,6 @@ namespace radview::gl {
 
 namespace {
 
-
 // Initialises `display` and makes a GL 4.5 core context current on it, or explains why not.
 bool makeContext(EGLDisplay display, EGLContext& context, std::string& why) {
   EGLint major = 0, minor = 0;
@@ -36,9 +35,9 @@ bool makeContext(EGLDisplay display, EGLContext& context, std::string& why) {
     eglTerminate(display);
     return false;
   }
-  const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_NONE};
+  const EGLint contextAttributes[] = {
+      EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 5, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
   context = eglCreateContext(display, noConfig ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT, contextAttributes);
   if (context == EGL_NO_CONTEXT) {
     why = "no OpenGL 4.5 core context (EGL error " + hexCode(eglGetError()) + ")";

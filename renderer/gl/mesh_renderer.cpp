@@ -118,8 +118,8 @@ MeshRenderer::MeshRenderer() {
 MeshRenderer::~MeshRenderer() {
   GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_, netVao_, serendipityVao_};
   glDeleteVertexArrays(7, arrays);
-  GLuint buffers[] = {meshVbo_,     edgeVbo_, polygonCorners_, polygonOffsets_, overlayVbo_,
-                      splitVbo_,    netVbo_,  serendipityVbo_};
+  GLuint buffers[] = {meshVbo_,    edgeVbo_,  polygonCorners_, polygonOffsets_,
+                      overlayVbo_, splitVbo_, netVbo_,         serendipityVbo_};
   glDeleteBuffers(8, buffers);
   glDeleteQueries(2, timerQueries_.data());
   if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
@@ -169,8 +169,7 @@ int degreeOf(Method method) { return method == Method::CloughTocher ? 3 : 2; }
 }  // namespace
 
 bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation) {
-  return (method == Method::C1Quadratic || method == Method::CloughTocher) &&
-         evaluation.tessellation == 0;
+  return (method == Method::C1Quadratic || method == Method::CloughTocher) && evaluation.tessellation == 0;
 }
 
 void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) {
@@ -185,9 +184,9 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) 
   deferred_.clear();
   deferredFor_ = -1;
   std::vector<glm::vec3> split;
-  bezierPass_.upload(pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
-                                   settings.splitLines ? &split : nullptr),
-                     degreeOf(settings.method));
+  bezierPass_.upload(
+      pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher, settings.splitLines ? &split : nullptr),
+      degreeOf(settings.method));
   patchesFor_ = wanted;
   uploadSplit(split, settings.splitLines ? wanted : -1);
 }
@@ -263,8 +262,7 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else if (method == Method::ScanlineGouraud || method == Method::Bilinear) {
-    drawPolygons(method == Method::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width,
-                 height);
+    drawPolygons(method == Method::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width, height);
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
     // The comparison shares the method's pieces when it is the same method per pixel.
     const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
@@ -364,8 +362,9 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
                      comparisonDeferred_, nullptr);
       comparisonDeferredFor_ = comparisonKey;
     } else {
-      comparisonPass_.upload(pieceVertices(*mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
-                             degreeOf(settings.comparisonMethod));
+      comparisonPass_.upload(
+          pieceVertices(*mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
+          degreeOf(settings.comparisonMethod));
       comparisonPatchesFor_ = comparisonKey;
     }
   }
@@ -500,8 +499,8 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 
 Image MeshRenderer::readDisplay() const {
   return {targets_.width(), targets_.height(),
-          readPixels<uint8_t>(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(),
-                              targets_.height(), GL_UNSIGNED_BYTE)};
+          readPixels<uint8_t>(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(),
+                              GL_UNSIGNED_BYTE)};
 }
 
 void MeshRenderer::setReferenceImage(const ReferenceImage& reference) {
@@ -535,8 +534,8 @@ ReferenceImage MeshRenderer::readComparison() const {
   comparison.linear = true;
   comparison.path = "the comparison method";
   comparison.pixels = {targets_.width(), targets_.height(),
-                       readPixels<float>(targets_.comparisonFramebuffer(),
-                                         GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(), GL_FLOAT)};
+                       readPixels<float>(targets_.comparisonFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(),
+                                         targets_.height(), GL_FLOAT)};
   return comparison;
 }
 

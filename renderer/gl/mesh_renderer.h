@@ -45,7 +45,7 @@ struct RenderSettings {
   // kAdaptiveTessellation at the level that keeps the display error under the tolerance.
   int tessellation = 0;
   double tessellationTolerance = 0.5 / 255.0;
-  double exposure = 0.0;           // stops: B is scaled by 2^exposure before display
+  double exposure = 0.0;  // stops: B is scaled by 2^exposure before display
   DisplayView view = DisplayView::Normal;
   double gradientScale = 0.02;  // gradient view: display units per pixel at the top of the scale
   int isolineCount = 16;        // isolines view: levels across the display range
@@ -58,11 +58,11 @@ struct RenderSettings {
   Method comparisonMethod = Method::CloughTocher;
   double differenceScale = 4.0 / 255.0;
   bool elementEdges = false;
-  bool discontinuityEdges = false;  // coloured by continuity order (C-1, C0)
-  bool tVertices = false;           // markers
-  bool repairTVertices = false;  // draw elements with T-vertices as triangles through them (Baum et al.)
-  bool splitLines = false;              // C1 methods: the lines that cut elements into Bezier pieces
-  bool tessellationTriangles = false;   // tessellated methods: the generated triangles
+  bool discontinuityEdges = false;     // coloured by continuity order (C-1, C0)
+  bool tVertices = false;              // markers
+  bool repairTVertices = false;        // draw elements with T-vertices as triangles through them (Baum et al.)
+  bool splitLines = false;             // C1 methods: the lines that cut elements into Bezier pieces
+  bool tessellationTriangles = false;  // tessellated methods: the generated triangles
   // Quadratic and C1 methods: the radiosity surface of fig. 9.13, B as a height over each
   // element, its tallest point (of non-emitting elements) at this fraction of the scene's
   // size; 0 is off. Drawn tessellated (adaptively when the method is set to per pixel).
@@ -137,8 +137,8 @@ class MeshRenderer {
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GLuint overlayVao_ = 0, overlayVbo_ = 0;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
-  GLuint polygonCorners_ = 0, polygonOffsets_ = 0;  // storage buffers: element polygons
-  bool polygonsUploaded_ = false;                   // only the methods that draw polygons need them
+  GLuint polygonCorners_ = 0, polygonOffsets_ = 0;          // storage buffers: element polygons
+  bool polygonsUploaded_ = false;                           // only the methods that draw polygons need them
   void uploadPolygons();
   // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
   GLuint serendipityVao_ = 0, serendipityVbo_ = 0;
@@ -170,13 +170,14 @@ class MeshRenderer {
   GLuint referenceTexture_ = 0;
   GLuint shownTexture_ = 0, shownFbo_ = 0;  // setShownImage's, and a framebuffer to blit it from
   int shownWidth_ = 0, shownHeight_ = 0;
-  ReferenceImage reference_;  // as set, for readComparison
-  bool comparedWithImage_ = false;  // what the last difference view used
+  ReferenceImage reference_;                       // as set, for readComparison
+  bool comparedWithImage_ = false;                 // what the last difference view used
   std::shared_ptr<const RadiosityMesh> original_;  // as set
-  std::shared_ptr<const RadiosityMesh> mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
+  std::shared_ptr<const RadiosityMesh>
+      mesh_;  // as drawn: the original, or with its T-vertices repaired, moved by -origin_
   std::shared_ptr<const MeshTopology> topology_;  // mesh_'s, built once for the display mesh and every method's pieces
-  Vec3 origin_{0.0};    // the world point at the origin of the coordinates the GPU sees
-  double brightestLuminance_ = 1.0;  // of the non-emitting elements' nodes, for the surface view
+  Vec3 origin_{0.0};                              // the world point at the origin of the coordinates the GPU sees
+  double brightestLuminance_ = 1.0;               // of the non-emitting elements' nodes, for the surface view
   // The Bezier pass's settings for this frame.
   BezierEvaluation bezierEvaluation(const RenderSettings& settings, const Camera& camera) const;
   bool repairedDrawn_ = false;
@@ -188,8 +189,8 @@ class MeshRenderer {
   GLuint netVao_ = 0, netVbo_ = 0;
   GLsizei netVertices_ = 0;
   std::array<double, 2> netFor_{-1, 0};  // patchesFor_, height scale
-  int patchesFor_ = -1;  // the method and variant the Bezier pass holds, -1 none
-  int splitFor_ = -1;    // the method and variant splitVbo_ holds
+  int patchesFor_ = -1;                  // the method and variant the Bezier pass holds, -1 none
+  int splitFor_ = -1;                    // the method and variant splitVbo_ holds
   // Timer queries, two in flight so reading a result never stalls the frame.
   std::array<GLuint, 2> timerQueries_{};
   int frame_ = 0;

@@ -56,11 +56,13 @@ void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<
   const SurfaceTriangulation& surface = *setup.surface;
   const size_t triangles = surface.triangles().size();
   if (setup.method == Method::CloughTocher) {
-    streamPatches(pass, triangles, 3, kCloughTocherSplitPoints,
-                  [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
+    streamPatches(
+        pass, triangles, 3, kCloughTocherSplitPoints,
+        [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
   } else {
-    streamPatches(pass, triangles, 2, kPowellSabinSplitPoints,
-                  [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, setup.incenters, t); }, split);
+    streamPatches(
+        pass, triangles, 2, kPowellSabinSplitPoints,
+        [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, setup.incenters, t); }, split);
   }
 }
 

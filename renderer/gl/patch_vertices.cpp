@@ -26,8 +26,7 @@ void addPiece(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners
 // surface lifts each piece along its corners' right-hand normal, so every piece must turn
 // the way its element does.
 template <size_t N>
-void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners,
-                      const std::array<Rgb, N>& b) {
+void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>& corners, const std::array<Rgb, N>& b) {
   const int n = N == 10 ? 3 : 2;
   std::array<Rgb, N> swapped{};
   for (int i = 0; i <= n; ++i)
@@ -106,7 +105,7 @@ std::vector<BezierVertex> powellSabinVertices(const std::vector<PowellSabinPatch
     for (int k = 0; k < 3; ++k) {
       const Vec3 &a = p.frame.V[k], &b = p.frame.V[(k + 1) % 3];
       const Vec3 R = (1.0 - p.t[k]) * a + p.t[k] * b;
-      addPiece(out, {a, R, p.Z}, p.control[2 * k]);      // piece 2k: (V_k, R_k, Z)
+      addPiece(out, {a, R, p.Z}, p.control[2 * k]);              // piece 2k: (V_k, R_k, Z)
       addPieceReversed(out, {b, R, p.Z}, p.control[2 * k + 1]);  // piece 2k+1: (V_k+1, R_k, Z)
     }
   return out;

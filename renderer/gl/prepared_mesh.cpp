@@ -20,7 +20,8 @@ PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool rep
   double brightest = 0.0;
   for (const Element& e : mesh.elements)
     if (!mesh.materials[e.material].isEmitter())
-      for (uint32_t n : e.corners) brightest = std::max(brightest, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
+      for (uint32_t n : e.corners)
+        brightest = std::max(brightest, glm::dot(mesh.nodes[n].B, Rgb(0.2126, 0.7152, 0.0722)));
   prepared.brightestLuminance = brightest > 0.0 ? brightest : 1.0;
   prepared.drawn = std::make_shared<const RadiosityMesh>(std::move(mesh));
   prepared.original = std::move(original);

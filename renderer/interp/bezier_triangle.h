@@ -13,7 +13,6 @@ namespace radview {
 
 using RgbGradient = std::array<Vec3, 3>;  // [c] = gradient of channel c
 
-
 // The barycentric coordinate functions lambda_i of a triangle V, as the affine functions of
 // space they are: lambda_i(x) = dot(grad[i], x - V[i+1]), i.e. each measured from a vertex of
 // the edge where it vanishes (so a point near an edge gets its small coordinate with a small

@@ -17,7 +17,7 @@ Vec3 BilinearMap::dxdt(const Vec2& st) const { return (1 - st.x) * (p_[3] - p_[0
 Vec2 BilinearMap::inverse(const Vec3& x) const {
   Vec2 st(0.5, 0.5);
   for (int iteration = 0; iteration < 50; ++iteration) {
-    const Vec3 r = (*this)(st) - x;
+    const Vec3 r = (*this)(st)-x;
     const Vec3 a = dxds(st), b = dxdt(st);
     // Least-squares Newton step in the plane spanned by a and b (x may lie off the plane).
     const double aa = glm::dot(a, a), ab = glm::dot(a, b), bb = glm::dot(b, b);

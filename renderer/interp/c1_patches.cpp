@@ -35,19 +35,20 @@ CloughTocherPatch cloughTocherPatch(const SurfaceTriangulation& surface, const C
     const std::optional<uint32_t> across = smoothNeighbour(surface, t, k);
     // Both sides of a C1 edge derive the same direction (up to sign), so their cross
     // derivatives, linear along the edge between the shared corner gradients, agree.
-    edges[k].d = variant == CloughTocherVariant::Book
-                     ? bookCrossDirection(a, b, C)
-                     : affineCrossDirection(
-                           a, b, C, across ? std::optional<Vec3>(centroidOf(surface.positions(*across))) : std::nullopt);
+    edges[k].d =
+        variant == CloughTocherVariant::Book
+            ? bookCrossDirection(a, b, C)
+            : affineCrossDirection(a, b, C,
+                                   across ? std::optional<Vec3>(centroidOf(surface.positions(*across))) : std::nullopt);
   }
   return buildCloughTocher(V, values(surface, t), gradients[t], edges);
 }
 
 std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulation& surface,
-                                                        const CornerGradients& gradients,
-                                                        CloughTocherVariant variant) {
+                                                        const CornerGradients& gradients, CloughTocherVariant variant) {
   std::vector<CloughTocherPatch> patches(surface.triangles().size());
-  parallelFor(patches.size(), [&](size_t t) { patches[t] = cloughTocherPatch(surface, gradients, variant, uint32_t(t)); });
+  parallelFor(patches.size(),
+              [&](size_t t) { patches[t] = cloughTocherPatch(surface, gradients, variant, uint32_t(t)); });
   return patches;
 }
 

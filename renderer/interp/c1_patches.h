@@ -19,8 +19,7 @@ CloughTocherPatch cloughTocherPatch(const SurfaceTriangulation& surface, const C
                                     CloughTocherVariant variant, uint32_t t);
 // One Clough-Tocher element per triangle of `surface`, built on every core.
 std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulation& surface,
-                                                        const CornerGradients& gradients,
-                                                        CloughTocherVariant variant);
+                                                        const CornerGradients& gradients, CloughTocherVariant variant);
 
 // The incenter of every triangle of `surface`, which Powell-Sabin's edge split points join.
 std::vector<Vec3> triangleIncenters(const SurfaceTriangulation& surface);

@@ -19,17 +19,24 @@ CloughTocherVariant cloughTocherVariantFromName(const std::string& name) {
 std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method method,
                                              const InterpolantOptions& options) {
   switch (method) {
-    case Method::Flat: return makeFlat(mesh);
-    case Method::Gouraud: return makeLinear(mesh, options.diagonal);
+    case Method::Flat:
+      return makeFlat(mesh);
+    case Method::Gouraud:
+      return makeLinear(mesh, options.diagonal);
     case Method::ScanlineGouraud:
       if (!options.view)
-        throw Error("scanline-gouraud depends on where the mesh is on the screen: it needs a view (camera and "
-                    "image size)");
+        throw Error(
+            "scanline-gouraud depends on where the mesh is on the screen: it needs a view (camera and "
+            "image size)");
       return makeScanlineGouraud(mesh, *options.view);
-    case Method::Bilinear: return makeBilinear(mesh);
-    case Method::Quadratic: return makeQuadraticLagrange(mesh);
-    case Method::C1Quadratic: return makePowellSabin(mesh, options);
-    case Method::CloughTocher: return makeCloughTocher(mesh, options);
+    case Method::Bilinear:
+      return makeBilinear(mesh);
+    case Method::Quadratic:
+      return makeQuadraticLagrange(mesh);
+    case Method::C1Quadratic:
+      return makePowellSabin(mesh, options);
+    case Method::CloughTocher:
+      return makeCloughTocher(mesh, options);
   }
   throw Error("unknown interpolation method");
 }

@@ -7,14 +7,15 @@ namespace radview {
 
 const std::vector<MethodInfo>& methodRegistry() {
   static const std::vector<MethodInfo> registry = {
-      {Method::Flat, "flat", "", "Flat", '1', "C&W §9.2",
-       "constant: the element's mean nodal value", false, false, false},
+      {Method::Flat, "flat", "", "Flat", '1', "C&W §9.2", "constant: the element's mean nodal value", false, false,
+       false},
       {Method::Gouraud, "gouraud", "linear", "Gouraud", '2', "C&W §9.2, fig. 9.7",
        "linear on each element's triangles, as the hardware interpolates (perspective-correct or in screen "
-       "space)", false, false, false},
+       "space)",
+       false, false, false},
       {Method::ScanlineGouraud, "scanline-gouraud", "", "Scanline Gouraud", '3', "C&W §9.2, fig. 9.7-9.8",
-       "down the polygon's edges, then across each scanline, as scanline hardware did: depends on the view",
-       true, false, false},
+       "down the polygon's edges, then across each scanline, as scanline hardware did: depends on the view", true,
+       false, false},
       {Method::Bilinear, "bilinear", "", "Bilinear", '4', "C&W §9.2, fig. 9.9",
        "quads in their bilinear parameter space, exact per pixel (orientation invariant)", false, false, false},
       {Method::Quadratic, "quadratic", "", "Quadratic", '5', "C&W §9.2",

@@ -22,15 +22,15 @@ enum class Method : int {
 
 struct MethodInfo {
   Method method;
-  std::string name;          // "gouraud": the command line's, files' and messages' name
-  std::string alias;         // an older name still accepted ("linear"), or empty
-  std::string label;         // "Gouraud": the viewer's
-  char key;                  // the viewer's number key
-  std::string section;       // where the book treats it: "C&W §9.2, fig. 9.7"
-  std::string summary;       // one line: --help, the panel's tooltip
-  bool viewDependent;        // the value depends on how the element lies on the screen
-  bool bezierPieces;         // drawn as Bezier or Lagrange pieces: exact per pixel or tessellated
-  bool c1;                   // C1 across element edges (relaxed where the mesh tags them)
+  std::string name;     // "gouraud": the command line's, files' and messages' name
+  std::string alias;    // an older name still accepted ("linear"), or empty
+  std::string label;    // "Gouraud": the viewer's
+  char key;             // the viewer's number key
+  std::string section;  // where the book treats it: "C&W §9.2, fig. 9.7"
+  std::string summary;  // one line: --help, the panel's tooltip
+  bool viewDependent;   // the value depends on how the element lies on the screen
+  bool bezierPieces;    // drawn as Bezier or Lagrange pieces: exact per pixel or tessellated
+  bool c1;              // C1 across element edges (relaxed where the mesh tags them)
 };
 
 // In enum order.

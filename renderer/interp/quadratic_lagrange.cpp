@@ -68,7 +68,8 @@ class QuadraticLagrange : public Interpolant {
     const Rgb& m1 = node(e.midEdge[1]).B;  // xi = +1
     const Rgb& m2 = node(e.midEdge[2]).B;  // eta = +1
     const Rgb& m3 = node(e.midEdge[3]).B;  // xi = -1
-    B += 0.5 * (1 - xi * xi) * ((1 - eta) * m0 + (1 + eta) * m2) + 0.5 * (1 - eta * eta) * ((1 + xi) * m1 + (1 - xi) * m3);
+    B += 0.5 * (1 - xi * xi) * ((1 - eta) * m0 + (1 + eta) * m2) +
+         0.5 * (1 - eta * eta) * ((1 + xi) * m1 + (1 - xi) * m3);
     dxi += -xi * ((1 - eta) * m0 + (1 + eta) * m2) + 0.5 * (1 - eta * eta) * (m1 - m3);
     deta += 0.5 * (1 - xi * xi) * (m2 - m0) - eta * ((1 + xi) * m1 + (1 - xi) * m3);
     Sample s;

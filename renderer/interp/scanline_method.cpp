@@ -52,9 +52,7 @@ class ScanlineGouraud : public Interpolant {
   }
 
  private:
-  Vec2 window(const glm::dvec4& clip) const {
-    return (Vec2(clip.x, clip.y) / clip.w * 0.5 + 0.5) * view_.viewport;
-  }
+  Vec2 window(const glm::dvec4& clip) const { return (Vec2(clip.x, clip.y) / clip.w * 0.5 + 0.5) * view_.viewport; }
 
   const RadiosityMesh& mesh_;
   ScreenView view_;

@@ -29,8 +29,8 @@ SurfacePoint nearestSurfacePoint(const RadiosityMesh& mesh, const Vec3& p) {
   best.distance = std::numeric_limits<double>::infinity();
   for (uint32_t e = 0; e < mesh.elements.size(); ++e)
     for (const auto& t : elementTriangles(mesh, e)) {
-      const Vec3 q = closestOnTriangle(mesh.nodes[t[0]].position, mesh.nodes[t[1]].position,
-                                       mesh.nodes[t[2]].position, p);
+      const Vec3 q =
+          closestOnTriangle(mesh.nodes[t[0]].position, mesh.nodes[t[1]].position, mesh.nodes[t[2]].position, p);
       const double d = glm::length(q - p);
       if (d < best.distance) best = {e, q, d};
     }

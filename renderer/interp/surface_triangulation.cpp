@@ -48,7 +48,8 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
   if (e.order() == ElementOrder::Linear) {
     // MeshTopology lists T-vertices by element: this element's are one run of them.
     const std::vector<TVertex>& all = topology.tVertices();
-    auto t = std::lower_bound(all.begin(), all.end(), element, [](const TVertex& v, uint32_t el) { return v.element < el; });
+    auto t =
+        std::lower_bound(all.begin(), all.end(), element, [](const TVertex& v, uint32_t el) { return v.element < el; });
     for (; t != all.end() && t->element == element; ++t)
       if (!isCapApex(*t)) inserted[t->edge].push_back({t->t, t->node});
   }
@@ -116,29 +117,32 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
   };
   constexpr size_t kBlock = 1024;
   std::vector<Cut> cuts((mesh.elements.size() + kBlock - 1) / kBlock);
-  parallelFor(cuts.size(), [&](size_t block) {
-    Cut& cut = cuts[block];
-    for (uint32_t e = uint32_t(block * kBlock); e < std::min(mesh.elements.size(), (block + 1) * kBlock); ++e) {
-      const std::vector<BoundaryVertex> boundary = boundaryWithTVertices(mesh, *topology_, e);
-      std::vector<Vec3> polygon;
-      for (const BoundaryVertex& v : boundary) polygon.push_back(mesh.nodes[v.node].position);
-      const size_t n = boundary.size();
-      const std::vector<std::array<int, 3>> triangles = delaunayTriangles(polygon);
-      for (const auto& t : triangles) {
-        SurfaceTriangle triangle;
-        triangle.element = e;
-        std::array<int64_t, 3> edges{};
-        for (int k = 0; k < 3; ++k) {
-          triangle.node[k] = boundary[t[k]].node;
-          const bool boundarySegment = size_t(t[(k + 1) % 3]) == (size_t(t[k]) + 1) % n;
-          edges[k] = boundarySegment ? int64_t(boundary[t[k]].elementEdge) : -1;
+  parallelFor(
+      cuts.size(),
+      [&](size_t block) {
+        Cut& cut = cuts[block];
+        for (uint32_t e = uint32_t(block * kBlock); e < std::min(mesh.elements.size(), (block + 1) * kBlock); ++e) {
+          const std::vector<BoundaryVertex> boundary = boundaryWithTVertices(mesh, *topology_, e);
+          std::vector<Vec3> polygon;
+          for (const BoundaryVertex& v : boundary) polygon.push_back(mesh.nodes[v.node].position);
+          const size_t n = boundary.size();
+          const std::vector<std::array<int, 3>> triangles = delaunayTriangles(polygon);
+          for (const auto& t : triangles) {
+            SurfaceTriangle triangle;
+            triangle.element = e;
+            std::array<int64_t, 3> edges{};
+            for (int k = 0; k < 3; ++k) {
+              triangle.node[k] = boundary[t[k]].node;
+              const bool boundarySegment = size_t(t[(k + 1) % 3]) == (size_t(t[k]) + 1) % n;
+              edges[k] = boundarySegment ? int64_t(boundary[t[k]].elementEdge) : -1;
+            }
+            cut.triangles.push_back(triangle);
+            cut.onElementEdge.push_back(edges);
+          }
+          cut.countOf.push_back(uint32_t(triangles.size()));
         }
-        cut.triangles.push_back(triangle);
-        cut.onElementEdge.push_back(edges);
-      }
-      cut.countOf.push_back(uint32_t(triangles.size()));
-    }
-  }, 1);
+      },
+      1);
   std::vector<std::array<int64_t, 3>> onElementEdge;
   for (Cut& cut : cuts) {
     uint32_t first = uint32_t(triangles_.size());
@@ -158,7 +162,9 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
   // run of equal ends is one edge and its sides.
   struct Side {
     uint32_t a, b, triangle, edge;
-    bool operator<(const Side& o) const { return std::tie(a, b, triangle, edge) < std::tie(o.a, o.b, o.triangle, o.edge); }
+    bool operator<(const Side& o) const {
+      return std::tie(a, b, triangle, edge) < std::tie(o.a, o.b, o.triangle, o.edge);
+    }
   };
   std::vector<Side> sides;
   sides.reserve(3 * triangles_.size());

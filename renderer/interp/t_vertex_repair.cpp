@@ -36,7 +36,8 @@ RadiosityMesh repairTVertices(const RadiosityMesh& mesh, size_t* repaired) {
     const Vec3 a = mesh.nodes[d.a].position, b = mesh.nodes[d.b].position;
     for (const TVertex& t : topology.tVertices()) {
       const Element& e = mesh.elements[t.element];
-      const uint32_t p = topology.positionId(e.corners[t.edge]), q = topology.positionId(e.corners[(t.edge + 1) % e.corners.size()]);
+      const uint32_t p = topology.positionId(e.corners[t.edge]),
+                     q = topology.positionId(e.corners[(t.edge + 1) % e.corners.size()]);
       const uint32_t pa = topology.positionId(d.a), pb = topology.positionId(d.b);
       if ((p == pa && q == pb) || (p == pb && q == pa))
         inside.push_back({glm::dot(mesh.nodes[t.node].position - a, b - a), t.node});

@@ -77,8 +77,8 @@ TessellationLevels adaptiveTessellationLevels(int n, const Rgb* net, double expo
 }
 
 std::vector<TessellationLevels> tessellationLevelsForPieces(int degree, const std::vector<std::array<Vec3, 3>>& corners,
-                                                           const std::vector<const Rgb*>& nets, double exposureScale,
-                                                           double tolerance) {
+                                                            const std::vector<const Rgb*>& nets, double exposureScale,
+                                                            double tolerance) {
   std::vector<TessellationLevels> levels(nets.size());
   for (size_t p = 0; p < nets.size(); ++p)
     levels[p] = adaptiveTessellationLevels(degree, nets[p], exposureScale, tolerance);

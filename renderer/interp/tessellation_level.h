@@ -41,15 +41,14 @@ struct TessellationLevels {
 };
 
 // `net`: the (n+1)(n+2)/2 control values in bezierIndex order (n = 1, 2 or 3).
-TessellationLevels adaptiveTessellationLevels(int degree, const Rgb* net, double exposureScale,
-                                              double tolerance);
+TessellationLevels adaptiveTessellationLevels(int degree, const Rgb* net, double exposureScale, double tolerance);
 
 // The levels of every piece of a set that tile surfaces (3 corners each, pieces sharing an
 // edge share its corner positions): each piece's own, with every shared edge's outer level
 // raised to the larger need of the pieces on its two sides, so both tessellate it alike.
 // `nets[p]` points at piece p's control values.
 std::vector<TessellationLevels> tessellationLevelsForPieces(int degree, const std::vector<std::array<Vec3, 3>>& corners,
-                                                           const std::vector<const Rgb*>& nets, double exposureScale,
-                                                           double tolerance);
+                                                            const std::vector<const Rgb*>& nets, double exposureScale,
+                                                            double tolerance);
 
 }  // namespace radview

@@ -20,8 +20,7 @@ std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, 
   return out;
 }
 
-std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh, size_t element,
-                                                      size_t firstCorner) {
+std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh, size_t element, size_t firstCorner) {
   const Element& e = mesh.elements[element];
   const size_t n = e.corners.size();
   if (e.order() == ElementOrder::Quadratic && n == 3) {
@@ -56,8 +55,9 @@ std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh&
     if (along.empty()) continue;
     std::sort(along.begin(), along.end(), [](const TVertex* a, const TVertex* b) { return a->t < b->t; });
     // Nodes sharing a position (the two sides of a C-1 edge) are one point of the outline.
-    along.erase(std::unique(along.begin(), along.end(), [](const TVertex* a, const TVertex* b) { return a->t == b->t; }),
-                along.end());
+    along.erase(
+        std::unique(along.begin(), along.end(), [](const TVertex* a, const TVertex* b) { return a->t == b->t; }),
+        along.end());
     const Vec3 A = mesh.nodes[e.corners[k]].position, AB = mesh.nodes[e.corners[(k + 1) % n]].position - A;
     auto onEdge = [&](uint32_t node) {
       return node == e.corners[k] || node == e.corners[(k + 1) % n] ||
@@ -100,7 +100,9 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topo
     uint32_t from, to;
   };
   std::vector<DrawnEdge> drawnEdges;
-  auto addEdge = [&](uint32_t a, uint32_t b) { drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b}); };
+  auto addEdge = [&](uint32_t a, uint32_t b) {
+    drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b});
+  };
 
   const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
   for (size_t e = 0; e < mesh.elements.size(); ++e) {

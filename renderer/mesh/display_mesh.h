@@ -29,23 +29,22 @@ struct OverlayVertex {
 inline constexpr glm::vec4 kDiscontinuityCm1Color{1.0f, 0.25f, 0.2f, 1.0f};  // C-1: value jumps
 inline constexpr glm::vec4 kDiscontinuityC0Color{1.0f, 0.85f, 0.1f, 1.0f};   // C0: derivative jumps
 inline constexpr glm::vec4 kTVertexColor{1.0f, 0.1f, 1.0f, 1.0f};
-inline constexpr glm::vec4 kSplitLineColor{0.1f, 0.9f, 0.9f, 1.0f};     // Bezier piece boundaries
+inline constexpr glm::vec4 kSplitLineColor{0.1f, 0.9f, 0.9f, 1.0f};      // Bezier piece boundaries
 inline constexpr glm::vec4 kTessellationColor{0.2f, 0.35f, 1.0f, 1.0f};  // generated triangles
-inline constexpr glm::vec4 kControlNetColor{1.0f, 0.55f, 0.1f, 1.0f};   // the surface's Bezier control net
+inline constexpr glm::vec4 kControlNetColor{1.0f, 0.55f, 0.1f, 1.0f};    // the surface's Bezier control net
 
 struct DisplayMesh {
-  std::vector<DisplayVertex> triangles;  // three vertices per triangle
-  std::vector<glm::vec3> elementEdges;   // two points per segment, each element edge once
+  std::vector<DisplayVertex> triangles;           // three vertices per triangle
+  std::vector<glm::vec3> elementEdges;            // two points per segment, each element edge once
   std::vector<OverlayVertex> discontinuityEdges;  // two per segment, coloured by order; C1 tags not drawn
   std::vector<OverlayVertex> tVertices;           // one marker each (MeshTopology::tVertices)
 };
 
-// Elements are drawn as watertightTriangles. Linear elements are triangulated over their corners (triangulatePolygon: a fan when
-// strictly convex, else a constrained Delaunay triangulation, so a T-vertex listed as a
-// corner gets no zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so
-// Gouraud shading passes through all six nodal values; other quadratic polygons are cut
-// over their corners only (their mid-edge values are shown by the higher-order methods).
-// `topology` is the mesh's own (MeshTopology(mesh)).
+// Elements are drawn as watertightTriangles. Linear elements are triangulated over their corners (triangulatePolygon: a
+// fan when strictly convex, else a constrained Delaunay triangulation, so a T-vertex listed as a corner gets no
+// zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so Gouraud shading
+// passes through all six nodal values; other quadratic polygons are cut over their corners only (their mid-edge values
+// are shown by the higher-order methods). `topology` is the mesh's own (MeshTopology(mesh)).
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
 
 // A corner of a triangle the GPU draws of an element: at a node's position, with the value the

@@ -11,9 +11,12 @@ namespace radview {
 
 const char* toString(Continuity c) {
   switch (c) {
-    case Continuity::Cm1: return "C-1";
-    case Continuity::C0: return "C0";
-    case Continuity::C1: return "C1";
+    case Continuity::Cm1:
+      return "C-1";
+    case Continuity::C0:
+      return "C0";
+    case Continuity::C1:
+      return "C1";
   }
   return "C?";
 }

@@ -12,6 +12,6 @@ inline constexpr int kArrayBuffer = 34962;         // bufferView.target of verte
 inline constexpr int kElementArrayBuffer = 34963;  // bufferView.target of indices
 inline constexpr uint32_t kNoVertex = UINT32_MAX;  // a mesh node not (yet) in a primitive
 inline constexpr const char* kGradientAttributes[3] = {"_RADIOSITY_GRADIENT_R", "_RADIOSITY_GRADIENT_G",
-                                                        "_RADIOSITY_GRADIENT_B"};
+                                                       "_RADIOSITY_GRADIENT_B"};
 
 }  // namespace radview::solution_format

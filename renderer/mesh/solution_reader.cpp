@@ -61,8 +61,8 @@ class SolutionReader {
     for (size_t m = 0; m < model_.meshes.size(); ++m)
       for (size_t p = 0; p < model_.meshes[m].primitives.size(); ++p) {
         primitives.push_back(readPrimitive(model_.meshes[m].primitives[p],
-                                           "mesh " + std::to_string(m) + " primitive " + std::to_string(p),
-                                           nodeCount, elementCount));
+                                           "mesh " + std::to_string(m) + " primitive " + std::to_string(p), nodeCount,
+                                           elementCount));
         vertices += primitives.back().vertices.size();
         elements += primitives.back().elements.size();
         // Primitives may share accessors, so a small file could list the same data many times.
@@ -101,8 +101,7 @@ class SolutionReader {
     Rgb out;
     for (int c = 0; c < 3; ++c) {
       const tinygltf::Value& x = v->Get(c);
-      if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble()))
-        fail(where + ": " + key + " is not 3 finite numbers");
+      if (!x.IsNumber() || !std::isfinite(x.GetNumberAsDouble())) fail(where + ": " + key + " is not 3 finite numbers");
       out[c] = x.GetNumberAsDouble();
     }
     return out;
@@ -171,8 +170,7 @@ class SolutionReader {
     const std::vector<uint32_t> offsets = readList("cornerOffsets", uint64_t(corners.size()) + 1);
     checkCount("cornerOffsets", offsets.size(), count + 1);
     if (offsets.front() != 0 || offsets.back() != corners.size())
-      fail(extWhat + ".cornerOffsets must start at 0 and end at the corner count " +
-           std::to_string(corners.size()));
+      fail(extWhat + ".cornerOffsets must start at 0 and end at the corner count " + std::to_string(corners.size()));
     const std::vector<double> orders =
         doc_.readAccessor(integer(ext, "order", extWhat), {extWhat + ".order", 1, kUnsignedByte, false});
     checkCount("order", orders.size(), count);
@@ -182,9 +180,8 @@ class SolutionReader {
     size_t midEdgeCount = 0;
     for (size_t k = 0; k < count; ++k) {
       if (offsets[k + 1] < offsets[k] + 3)
-        fail(extWhat + ".cornerOffsets: element " + std::to_string(k) + " spans offsets " +
-             std::to_string(offsets[k]) + " -> " + std::to_string(offsets[k + 1]) +
-             "; they must increase by at least 3 per element");
+        fail(extWhat + ".cornerOffsets: element " + std::to_string(k) + " spans offsets " + std::to_string(offsets[k]) +
+             " -> " + std::to_string(offsets[k + 1]) + "; they must increase by at least 3 per element");
       if (offsets[k + 1] - offsets[k] > kMaxElementCorners)
         fail(extWhat + ".cornerOffsets: element " + std::to_string(k) + " has " +
              std::to_string(offsets[k + 1] - offsets[k]) + " corners, more than radview's limit of " +
@@ -236,8 +233,7 @@ class SolutionReader {
       }
       for (size_t k = 0; k < p.elements.size(); ++k) {
         const uint32_t e = p.element[k];
-        if (elementStored[e])
-          fail(p.what + ": element " + std::to_string(e) + " is stored a second time");
+        if (elementStored[e]) fail(p.what + ": element " + std::to_string(e) + " is stored a second time");
         elementStored[e] = 1;
         Element& element = mesh_.elements[e];
         element = p.elements[k];
@@ -266,8 +262,8 @@ class SolutionReader {
            " edges (expected 2 per edge)");
     for (size_t d = 0; d < orders.size(); ++d) {
       if (orders[d] < -1.0 || orders[d] > 1.0)
-        fail(std::string(kSolutionExtension) + ".discontinuityOrders: edge " + std::to_string(d) +
-             " has order " + std::to_string(int(orders[d])) + " (expected -1, 0 or 1)");
+        fail(std::string(kSolutionExtension) + ".discontinuityOrders: edge " + std::to_string(d) + " has order " +
+             std::to_string(int(orders[d])) + " (expected -1, 0 or 1)");
       mesh_.discontinuities.push_back({nodes[2 * d], nodes[2 * d + 1], Continuity(int8_t(orders[d]))});
     }
   }
@@ -279,9 +275,7 @@ class SolutionReader {
 
 }  // namespace
 
-bool isSolution(const GltfDocument& document) {
-  return document.model().extensions.count(kSolutionExtension) > 0;
-}
+bool isSolution(const GltfDocument& document) { return document.model().extensions.count(kSolutionExtension) > 0; }
 
 RadiosityMesh readSolution(const GltfDocument& document) { return SolutionReader(document).read(); }
 

@@ -10,8 +10,8 @@
 #include "geom/polygon.h"
 #include "mesh/solution_format.h"
 
-#include <glm/gtc/constants.hpp>
 #include <tiny_gltf.h>
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <array>
@@ -25,8 +25,7 @@ namespace {
 using namespace solution_format;
 
 tinygltf::Value numbers(const Rgb& v) {
-  return tinygltf::Value(
-      tinygltf::Value::Array{tinygltf::Value(v.r), tinygltf::Value(v.g), tinygltf::Value(v.b)});
+  return tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(v.r), tinygltf::Value(v.g), tinygltf::Value(v.b)});
 }
 
 // Appends accessor data to the model's only buffer, one 4-byte-aligned bufferView each.
@@ -50,12 +49,11 @@ class BufferWriter {
                values.size(), target);
   }
   int ubytes(const std::vector<uint8_t>& values) {
-    return add(values.data(), values.size(), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_SCALAR,
-               values.size(), 0);
+    return add(values.data(), values.size(), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_TYPE_SCALAR, values.size(),
+               0);
   }
   int bytes(const std::vector<int8_t>& values) {
-    return add(values.data(), values.size(), TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_SCALAR,
-               values.size(), 0);
+    return add(values.data(), values.size(), TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_TYPE_SCALAR, values.size(), 0);
   }
 
  private:
@@ -131,8 +129,7 @@ class SolutionWriter {
   tinygltf::Model build() {
     const double scale = toneMapScale(mesh_);
     std::vector<std::vector<uint32_t>> elementsOf(mesh_.materials.size());
-    for (uint32_t e = 0; e < mesh_.elements.size(); ++e)
-      elementsOf[size_t(mesh_.elements[e].material)].push_back(e);
+    for (uint32_t e = 0; e < mesh_.elements.size(); ++e) elementsOf[size_t(mesh_.elements[e].material)].push_back(e);
     tinygltf::Mesh gltfMesh;
     gltfMesh.name = "radiosity solution";
     bool first = true;
@@ -187,16 +184,16 @@ class SolutionWriter {
     const Bounds bounds = mesh_.bounds();
     const double diagonal = bounds.diagonal();
     gltfCamera.perspective.znear = diagonal > 0.0 ? 1e-3 * diagonal : 1e-3;
-    gltfCamera.perspective.zfar = std::max(2.0 * (glm::distance(camera.eye, bounds.center()) + diagonal),
-                                           2.0 * gltfCamera.perspective.znear);
+    gltfCamera.perspective.zfar =
+        std::max(2.0 * (glm::distance(camera.eye, bounds.center()) + diagonal), 2.0 * gltfCamera.perspective.znear);
     model_.cameras.push_back(gltfCamera);
 
     tinygltf::Node node;
     node.name = camera.name;
     node.camera = int(model_.cameras.size()) - 1;
-    node.matrix = {right.x,    right.y,    right.z,    0.0,  // column-major: the node's +X,
-                   up.x,       up.y,       up.z,       0.0,  // +Y,
-                   -forward.x, -forward.y, -forward.z, 0.0,  // +Z
+    node.matrix = {right.x,      right.y,      right.z,      0.0,   // column-major: the node's +X,
+                   up.x,         up.y,         up.z,         0.0,   // +Y,
+                   -forward.x,   -forward.y,   -forward.z,   0.0,   // +Z
                    camera.eye.x, camera.eye.y, camera.eye.z, 1.0};  // and origin
     model_.nodes.push_back(node);
   }
@@ -230,8 +227,7 @@ class SolutionWriter {
     return nodes;
   }
 
-  tinygltf::Primitive primitive(int material, const std::vector<uint32_t>& elements, double scale,
-                                bool takeOrphans) {
+  tinygltf::Primitive primitive(int material, const std::vector<uint32_t>& elements, double scale, bool takeOrphans) {
     const std::vector<uint32_t> nodes = primitiveNodes(elements, takeOrphans);
     for (uint32_t v = 0; v < nodes.size(); ++v) localOf_[nodes[v]] = v;
 
@@ -281,8 +277,7 @@ class SolutionWriter {
     p.attributes["COLOR_0"] = buffer_.vec3s(colors, false);
     p.attributes["_RADIOSITY"] = buffer_.vec3s(radiosity, false);
     if (mesh_.hasGradients)
-      for (int c = 0; c < 3; ++c)
-        p.attributes[kGradientAttributes[c]] = buffer_.vec3s(gradients[size_t(c)], false);
+      for (int c = 0; c < 3; ++c) p.attributes[kGradientAttributes[c]] = buffer_.vec3s(gradients[size_t(c)], false);
 
     tinygltf::Value::Object ext;
     ext["node"] = tinygltf::Value(buffer_.uints(nodes));
@@ -375,8 +370,7 @@ void writeSolution(const RadiosityMesh& mesh, const std::string& path, const std
   checkLimit(path, mesh.elements.size(), kMaxSolutionElements, "elements");
   checkLimit(path, mesh.discontinuities.size(), kMaxDiscontinuityEdges, "discontinuity edges");
   for (size_t e = 0; e < mesh.elements.size(); ++e)
-    checkLimit(path, mesh.elements[e].corners.size(), kMaxElementCorners,
-               "corners in element " + std::to_string(e));
+    checkLimit(path, mesh.elements[e].corners.size(), kMaxElementCorners, "corners in element " + std::to_string(e));
   const tinygltf::Model model = SolutionWriter(mesh, cameras, path).build();
 
   // Serialized in memory rather than by WriteGltfSceneToFile, which ignores failed writes and

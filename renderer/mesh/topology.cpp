@@ -108,15 +108,14 @@ MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
   // An edge tagged more than once keeps its lowest order (the weaker continuity wins).
   for (size_t d = 0; d < mesh.discontinuities.size(); ++d) {
     const DiscontinuityEdge& tag = mesh.discontinuities[d];
-    const std::string name = "discontinuity edge " + std::to_string(d) + " (nodes " + std::to_string(tag.a) +
-                             "-" + std::to_string(tag.b) + ")";
-    if (tag.a >= mesh.nodes.size() || tag.b >= mesh.nodes.size())
-      throw Error(name + " refers to a node out of range");
-    const uint32_t a = std::min(positionId_[tag.a], positionId_[tag.b]), b = std::max(positionId_[tag.a], positionId_[tag.b]);
-    auto it = std::lower_bound(edges_.begin(), edges_.end(), std::make_pair(a, b),
-                               [](const MeshEdge& e, const std::pair<uint32_t, uint32_t>& key) {
-                                 return std::make_pair(e.a, e.b) < key;
-                               });
+    const std::string name = "discontinuity edge " + std::to_string(d) + " (nodes " + std::to_string(tag.a) + "-" +
+                             std::to_string(tag.b) + ")";
+    if (tag.a >= mesh.nodes.size() || tag.b >= mesh.nodes.size()) throw Error(name + " refers to a node out of range");
+    const uint32_t a = std::min(positionId_[tag.a], positionId_[tag.b]),
+                   b = std::max(positionId_[tag.a], positionId_[tag.b]);
+    auto it = std::lower_bound(
+        edges_.begin(), edges_.end(), std::make_pair(a, b),
+        [](const MeshEdge& e, const std::pair<uint32_t, uint32_t>& key) { return std::make_pair(e.a, e.b) < key; });
     if (it == edges_.end() || it->a != a || it->b != b) throw Error(name + " is not an element edge");
     it->continuity = std::min(it->continuity, tag.order);
   }
@@ -128,8 +127,7 @@ MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
 // Coplanar means parallel normals facing the same way (the two faces of a thin wall are not one
 // surface); the planes then coincide, since both contain the node. Walls meeting at a corner
 // are not coplanar, so a floor node on the bottom edge of a wall is no T-vertex.
-void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Vec3>& positions,
-                                 double weldDistance) {
+void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Vec3>& positions, double weldDistance) {
   std::vector<Vec3> normals;
   normals.reserve(mesh.elements.size());
   for (size_t e = 0; e < mesh.elements.size(); ++e) normals.push_back(mesh.elementNormal(e));
@@ -162,42 +160,45 @@ void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Ve
   // Edges in blocks, each block's T-vertices its own list: the blocks run on every core.
   constexpr size_t kBlock = 4096;
   std::vector<std::vector<TVertex>> found((edges_.size() + kBlock - 1) / kBlock);
-  parallelFor(found.size(), [&](size_t block) {
-    std::vector<uint32_t> near;
-    for (size_t index = block * kBlock; index < std::min(edges_.size(), (block + 1) * kBlock); ++index) {
-      const MeshEdge& edge = edges_[index];
-      const Vec3 A = positions[edge.a], B = positions[edge.b];
-      const double L = glm::distance(A, B);
-      if (L == 0.0) continue;
-      // "On the edge": within a relative 1e-5 of its length (or the weld distance) of its line.
-      const double tolerance = 1e-5 * L + weldDistance;
-      // The edge in pieces no longer than a cell; the boxes about them, grown by twice the
-      // tolerance, hold every point within `tolerance` of the edge, and each meets a few cells.
-      const int steps = int(std::ceil(L / cellSize));  // cellSize >= 1e-6 diagonal: at most 1e6
-      near.clear();
-      for (int k = 0; k < steps; ++k) {
-        const Vec3 p0 = A + (double(k) / steps) * (B - A), p1 = A + (double(k + 1) / steps) * (B - A);
-        grid.forEachNear(glm::min(p0, p1) - Vec3(2.0 * tolerance), glm::max(p0, p1) + Vec3(2.0 * tolerance),
-                         [&](uint32_t p) { near.push_back(p); });
-      }
-      std::sort(near.begin(), near.end());
-      near.erase(std::unique(near.begin(), near.end()), near.end());
-      for (uint32_t p : near) {
-        if (p == edge.a || p == edge.b) continue;
-        const double t = glm::dot(positions[p] - A, B - A) / (L * L);
-        if (t * L <= tolerance || (1.0 - t) * L <= tolerance) continue;
-        if (glm::distance(positions[p], A + t * (B - A)) > tolerance) continue;
-        nodesAtPosition.forEach(p, [&](uint32_t node) {
-          for (const EdgeSide& side : sides(edge)) {
-            if (hasPosition(side.element, p) || !coplanarWithNode(side.element, node)) continue;
-            // t runs from edge.a; the side's edge may run the other way.
-            const bool forward = positionId_[mesh.elements[side.element].corners[side.edge]] == edge.a;
-            found[block].push_back({node, side.element, side.edge, forward ? t : 1.0 - t});
+  parallelFor(
+      found.size(),
+      [&](size_t block) {
+        std::vector<uint32_t> near;
+        for (size_t index = block * kBlock; index < std::min(edges_.size(), (block + 1) * kBlock); ++index) {
+          const MeshEdge& edge = edges_[index];
+          const Vec3 A = positions[edge.a], B = positions[edge.b];
+          const double L = glm::distance(A, B);
+          if (L == 0.0) continue;
+          // "On the edge": within a relative 1e-5 of its length (or the weld distance) of its line.
+          const double tolerance = 1e-5 * L + weldDistance;
+          // The edge in pieces no longer than a cell; the boxes about them, grown by twice the
+          // tolerance, hold every point within `tolerance` of the edge, and each meets a few cells.
+          const int steps = int(std::ceil(L / cellSize));  // cellSize >= 1e-6 diagonal: at most 1e6
+          near.clear();
+          for (int k = 0; k < steps; ++k) {
+            const Vec3 p0 = A + (double(k) / steps) * (B - A), p1 = A + (double(k + 1) / steps) * (B - A);
+            grid.forEachNear(glm::min(p0, p1) - Vec3(2.0 * tolerance), glm::max(p0, p1) + Vec3(2.0 * tolerance),
+                             [&](uint32_t p) { near.push_back(p); });
           }
-        });
-      }
-    }
-  }, 1);
+          std::sort(near.begin(), near.end());
+          near.erase(std::unique(near.begin(), near.end()), near.end());
+          for (uint32_t p : near) {
+            if (p == edge.a || p == edge.b) continue;
+            const double t = glm::dot(positions[p] - A, B - A) / (L * L);
+            if (t * L <= tolerance || (1.0 - t) * L <= tolerance) continue;
+            if (glm::distance(positions[p], A + t * (B - A)) > tolerance) continue;
+            nodesAtPosition.forEach(p, [&](uint32_t node) {
+              for (const EdgeSide& side : sides(edge)) {
+                if (hasPosition(side.element, p) || !coplanarWithNode(side.element, node)) continue;
+                // t runs from edge.a; the side's edge may run the other way.
+                const bool forward = positionId_[mesh.elements[side.element].corners[side.edge]] == edge.a;
+                found[block].push_back({node, side.element, side.edge, forward ? t : 1.0 - t});
+              }
+            });
+          }
+        }
+      },
+      1);
   for (const std::vector<TVertex>& list : found) tVertices_.insert(tVertices_.end(), list.begin(), list.end());
   std::sort(tVertices_.begin(), tVertices_.end(), [](const TVertex& x, const TVertex& y) {
     return std::tie(x.element, x.edge, x.t, x.node) < std::tie(y.element, y.edge, y.t, y.node);
@@ -212,8 +213,7 @@ int64_t MeshTopology::neighbour(uint32_t element, uint32_t edge) const {
 }
 
 size_t MeshTopology::countEdges(Continuity order) const {
-  return size_t(
-      std::count_if(edges_.begin(), edges_.end(), [&](const MeshEdge& e) { return e.continuity == order; }));
+  return size_t(std::count_if(edges_.begin(), edges_.end(), [&](const MeshEdge& e) { return e.continuity == order; }));
 }
 
 }  // namespace radview

@@ -14,8 +14,9 @@ struct EdgeSide {
 };
 
 struct MeshEdge {
-  uint32_t a = 0, b = 0;                   // position ids (see MeshTopology::positionId), a < b
-  uint32_t firstSide = 0, sideCount = 0;   // its sides (MeshTopology::sides); 1: boundary, 2: interior, more: non-manifold
+  uint32_t a = 0, b = 0;  // position ids (see MeshTopology::positionId), a < b
+  uint32_t firstSide = 0,
+           sideCount = 0;  // its sides (MeshTopology::sides); 1: boundary, 2: interior, more: non-manifold
   Continuity continuity = Continuity::C1;  // tagged order, C1 where untagged
 };
 
@@ -68,9 +69,9 @@ class MeshTopology {
   std::vector<uint32_t> positionId_;
   uint32_t positionCount_ = 0;
   std::vector<MeshEdge> edges_;
-  std::vector<EdgeSide> sides_;              // grouped by edge, in edges_' order
-  std::vector<uint32_t> elementFirstEdge_;   // per element: where its edges start in elementEdges_
-  std::vector<uint32_t> elementEdges_;       // per element, per edge: index in edges_
+  std::vector<EdgeSide> sides_;             // grouped by edge, in edges_' order
+  std::vector<uint32_t> elementFirstEdge_;  // per element: where its edges start in elementEdges_
+  std::vector<uint32_t> elementEdges_;      // per element, per edge: index in edges_
   std::vector<TVertex> tVertices_;
 };
 

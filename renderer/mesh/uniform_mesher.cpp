@@ -42,8 +42,7 @@ PolygonPlan planPolygon(const std::vector<Vec3>& v) {
   if (unitNormal(v) == Vec3(0.0)) return plan;
   auto length = [&](int i, int j) { return glm::distance(v[i], v[j]); };
   // A warped quad would give warped elements; triangles are always flat.
-  if (v.size() == 4 && isStrictlyConvex(v) &&
-      planarityError(v) <= 1e-4 * std::max(length(0, 2), length(1, 3))) {
+  if (v.size() == 4 && isStrictlyConvex(v) && planarityError(v) <= 1e-4 * std::max(length(0, 2), length(1, 3))) {
     plan.grid = true;
     plan.lengthU = std::max(length(0, 1), length(3, 2));
     plan.lengthV = std::max(length(1, 2), length(0, 3));
@@ -61,8 +60,7 @@ PolygonPlan planPolygon(const std::vector<Vec3>& v) {
 double sizeThatFits(const std::vector<PolygonPlan>& plans, double elementSize) {
   auto fits = [&](double size) { return elementCount(plans, size) <= double(kMaxMeshElements); };
   double enough = 0.0;  // no edge longer than this: every polygon gets its fewest elements
-  for (const PolygonPlan& plan : plans)
-    enough = std::max({enough, plan.lengthU, plan.lengthV, plan.longestEdge});
+  for (const PolygonPlan& plan : plans) enough = std::max({enough, plan.lengthU, plan.lengthV, plan.longestEdge});
   if (!fits(enough)) return 0.0;
   double tooSmall = elementSize;
   for (int i = 0; i < 200; ++i) {
@@ -116,8 +114,8 @@ void meshQuadGrid(RadiosityMesh& mesh, const std::vector<Vec3>& v, int n, int m,
 // Regular subdivision of the polygon's triangles into n^2 triangles each. A node on an edge is
 // computed from the edge's lower-indexed end whichever triangle asks, so the two triangles on a
 // shared edge produce bitwise equal positions, and the nodes are welded by exact position.
-void meshTriangles(RadiosityMesh& mesh, const std::vector<Vec3>& v,
-                   const std::vector<std::array<int, 3>>& triangles, int n, int surface, int material) {
+void meshTriangles(RadiosityMesh& mesh, const std::vector<Vec3>& v, const std::vector<std::array<int, 3>>& triangles,
+                   int n, int surface, int material) {
   std::map<std::array<double, 3>, uint32_t> nodeAt;
   auto nodeOf = [&](const Vec3& p) {
     auto [it, added] = nodeAt.emplace(std::array<double, 3>{p.x, p.y, p.z}, uint32_t(mesh.nodes.size()));
@@ -147,8 +145,7 @@ void meshTriangles(RadiosityMesh& mesh, const std::vector<Vec3>& v,
     for (int i = 0; i < n; ++i)
       for (int j = 0; i + j < n; ++j) {
         addElement(mesh, {at(i, j), at(i + 1, j), at(i, j + 1)}, surface, material);
-        if (i + j + 1 < n)
-          addElement(mesh, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, surface, material);
+        if (i + j + 1 < n) addElement(mesh, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}, surface, material);
       }
   }
 }
@@ -173,8 +170,8 @@ RadiosityMesh meshUniformly(const Scene& scene, double elementSize) {
   const double total = elementCount(plans, elementSize);
   if (total > double(kMaxMeshElements)) {
     std::ostringstream os;
-    os << "element size " << elementSize << " gives " << countText(total)
-       << " elements, more than radview's limit of " << kMaxMeshElements << "; ";
+    os << "element size " << elementSize << " gives " << countText(total) << " elements, more than radview's limit of "
+       << kMaxMeshElements << "; ";
     const double fitting = sizeThatFits(plans, elementSize);
     if (fitting > 0.0) {
       os << "an element size of " << fitting << " or more fits";
@@ -194,8 +191,8 @@ RadiosityMesh meshUniformly(const Scene& scene, double elementSize) {
       meshQuadGrid(mesh, polygon.vertices, int(divisions(plan.lengthU, elementSize)),
                    int(divisions(plan.lengthV, elementSize)), int(p), polygon.material);
     } else if (!plan.triangles.empty()) {
-      meshTriangles(mesh, polygon.vertices, plan.triangles, int(divisions(plan.longestEdge, elementSize)),
-                    int(p), polygon.material);
+      meshTriangles(mesh, polygon.vertices, plan.triangles, int(divisions(plan.longestEdge, elementSize)), int(p),
+                    polygon.material);
     }
   }
   return mesh;

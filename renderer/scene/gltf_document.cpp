@@ -19,8 +19,7 @@
 namespace radview {
 
 // glTF stores little-endian data; the decoding below copies bytes straight into host integers.
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
-              "radview reads glTF buffers on little-endian hosts only");
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "radview reads glTF buffers on little-endian hosts only");
 
 namespace {
 
@@ -60,7 +59,6 @@ bool spurious(const std::string& errorLine) {
                      [&](const char* s) { return errorLine == s; });
 }
 
-
 // Filesystem callbacks for tinygltf: only regular files, never larger than kMaxFileBytes. The
 // defaults open whatever a uri names. Corpus invalid/tinygltf/issue-416.gltf has an image uri
 // that decodes to a name starting with a NUL byte, so the C file API opens the base directory
@@ -93,16 +91,14 @@ bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const st
 }
 
 // radview draws no textures, so images are never decoded (the bytes are not even looked at).
-bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int,
-               void*) {
+bool skipImage(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
   return true;
 }
 
 // "2.0" -> {2, 0}; false unless the string is exactly <digits>.<digits> (spec: asset.version pattern).
 bool parseVersion(const std::string& text, int& major, int& minor) {
   const size_t dot = text.find('.');
-  if (dot == std::string::npos || dot == 0 || dot + 1 == text.size() || dot > 4 || text.size() - dot > 5)
-    return false;
+  if (dot == std::string::npos || dot == 0 || dot + 1 == text.size() || dot > 4 || text.size() - dot > 5) return false;
   for (size_t i = 0; i < text.size(); ++i)
     if (i != dot && !std::isdigit(static_cast<unsigned char>(text[i]))) return false;
   major = std::stoi(text.substr(0, dot));
@@ -121,20 +117,16 @@ void checkVersion(const std::string& path, const tinygltf::Asset& asset) {
   if (!parseVersion(asset.minVersion, minMajor, minMinor))
     throw Error(path, "asset.minVersion \"" + asset.minVersion + "\" is not of the form <major>.<minor>");
   if (std::make_pair(minMajor, minMinor) > std::make_pair(major, minor))
-    throw Error(path,
-                "asset.minVersion " + asset.minVersion + " is greater than asset.version " + asset.version);
+    throw Error(path, "asset.minVersion " + asset.minVersion + " is greater than asset.version " + asset.version);
   if (std::make_pair(minMajor, minMinor) > std::make_pair(2, 0))
-    throw Error(path,
-                "the file requires glTF " + asset.minVersion + " (asset.minVersion); radview reads glTF 2.0");
+    throw Error(path, "the file requires glTF " + asset.minVersion + " (asset.minVersion); radview reads glTF 2.0");
 }
 
 void checkRequiredExtensions(const std::string& path, const tinygltf::Model& model) {
   for (const std::string& name : model.extensionsRequired) {
-    const bool supported =
-        std::any_of(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions),
-                    [&](const char* s) { return name == s; });
-    if (!supported)
-      throw Error(path, "the file requires extension " + name + ", which radview does not support");
+    const bool supported = std::any_of(std::begin(kSupportedRequiredExtensions), std::end(kSupportedRequiredExtensions),
+                                       [&](const char* s) { return name == s; });
+    if (!supported) throw Error(path, "the file requires extension " + name + ", which radview does not support");
   }
 }
 
@@ -171,21 +163,31 @@ std::string allowedTypeNames(unsigned bits) {
 
 int componentsOf(int type) {
   switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return 1;
-    case TINYGLTF_TYPE_VEC2: return 2;
-    case TINYGLTF_TYPE_VEC3: return 3;
-    case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0;  // matrices: never read by radview
+    case TINYGLTF_TYPE_SCALAR:
+      return 1;
+    case TINYGLTF_TYPE_VEC2:
+      return 2;
+    case TINYGLTF_TYPE_VEC3:
+      return 3;
+    case TINYGLTF_TYPE_VEC4:
+      return 4;
+    default:
+      return 0;  // matrices: never read by radview
   }
 }
 
 const char* typeName(int components) {
   switch (components) {
-    case 1: return "SCALAR";
-    case 2: return "VEC2";
-    case 3: return "VEC3";
-    case 4: return "VEC4";
-    default: return "a matrix type";
+    case 1:
+      return "SCALAR";
+    case 2:
+      return "VEC2";
+    case 3:
+      return "VEC3";
+    case 4:
+      return "VEC4";
+    default:
+      return "a matrix type";
   }
 }
 
@@ -228,15 +230,13 @@ double decodeComponent(const unsigned char* p, int code, bool normalized) {
 // Reports the first problem found in one accessor as "<what>: accessor N: <problem>".
 class AccessorReader {
  public:
-  AccessorReader(const std::string& path, const tinygltf::Model& model, int index,
-                 const AccessorRequest& request)
+  AccessorReader(const std::string& path, const tinygltf::Model& model, int index, const AccessorRequest& request)
       : path_(path), model_(model), index_(index), request_(request) {}
 
   std::vector<double> read() {
     if (index_ < 0 || size_t(index_) >= model_.accessors.size())
-      throw Error(path_, request_.what + ": accessor " + std::to_string(index_) +
-                             " does not exist (the file has " + std::to_string(model_.accessors.size()) +
-                             " accessors)");
+      throw Error(path_, request_.what + ": accessor " + std::to_string(index_) + " does not exist (the file has " +
+                             std::to_string(model_.accessors.size()) + " accessors)");
     const tinygltf::Accessor& accessor = model_.accessors[size_t(index_)];
     const ComponentType* type = checkFormat(accessor);
     const uint64_t components = uint64_t(request_.components);
@@ -244,8 +244,8 @@ class AccessorReader {
     const uint64_t count = accessor.count;
     if (count == 0) fail("count is 0 (glTF requires at least 1)");
     if (count > kMaxAccessorElements)
-      fail("count " + std::to_string(count) + ", more than radview's limit of " +
-           std::to_string(kMaxAccessorElements) + " elements");
+      fail("count " + std::to_string(count) + ", more than radview's limit of " + std::to_string(kMaxAccessorElements) +
+           " elements");
 
     std::vector<double> values;
     if (accessor.bufferView < 0) {
@@ -256,19 +256,18 @@ class AccessorReader {
       values.assign(count * components, 0.0);  // the spec: no bufferView means zeros
     } else {
       if (accessor.byteOffset % type->size != 0)
-        fail("byteOffset " + std::to_string(accessor.byteOffset) +
-             " is not a multiple of the component size");
+        fail("byteOffset " + std::to_string(accessor.byteOffset) + " is not a multiple of the component size");
       const tinygltf::BufferView& view = bufferView(accessor.bufferView, "");
       uint64_t stride = view.byteStride;
       if (stride == 0) {
         stride = elementSize;
       } else {
         if (stride < 4 || stride > 252 || stride % 4 != 0)
-          fail("bufferView " + std::to_string(accessor.bufferView) + " has byteStride " +
-               std::to_string(stride) + " (glTF allows multiples of 4 from 4 to 252)");
+          fail("bufferView " + std::to_string(accessor.bufferView) + " has byteStride " + std::to_string(stride) +
+               " (glTF allows multiples of 4 from 4 to 252)");
         if (stride < elementSize)
-          fail("bufferView " + std::to_string(accessor.bufferView) + " has byteStride " +
-               std::to_string(stride) + ", smaller than the element size " + std::to_string(elementSize));
+          fail("bufferView " + std::to_string(accessor.bufferView) + " has byteStride " + std::to_string(stride) +
+               ", smaller than the element size " + std::to_string(elementSize));
       }
       if ((view.byteOffset + accessor.byteOffset) % type->size != 0)
         fail("data does not start at a multiple of the component size within its buffer");
@@ -299,8 +298,8 @@ class AccessorReader {
     const ComponentType* type = findComponentType(accessor.componentType);
     if (type == nullptr || !(type->bit & request_.componentTypes)) {
       const std::string name = type ? type->name : std::to_string(accessor.componentType);
-      fail("component type " + name +
-           " is not allowed here (allowed: " + allowedTypeNames(request_.componentTypes) + ")");
+      fail("component type " + name + " is not allowed here (allowed: " + allowedTypeNames(request_.componentTypes) +
+           ")");
     }
     if (accessor.normalized) {
       if (type->code == TINYGLTF_COMPONENT_TYPE_FLOAT || type->code == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
@@ -316,45 +315,39 @@ class AccessorReader {
            std::to_string(model_.bufferViews.size()) + " bufferViews)");
     const tinygltf::BufferView& view = model_.bufferViews[size_t(viewIndex)];
     if (view.buffer < 0 || size_t(view.buffer) >= model_.buffers.size())
-      fail(role + "bufferView " + std::to_string(viewIndex) + " refers to buffer " +
-           std::to_string(view.buffer) + ", which does not exist (the file has " +
-           std::to_string(model_.buffers.size()) + " buffers)");
+      fail(role + "bufferView " + std::to_string(viewIndex) + " refers to buffer " + std::to_string(view.buffer) +
+           ", which does not exist (the file has " + std::to_string(model_.buffers.size()) + " buffers)");
     return view;
   }
 
   // The bytes of `count` elements of `elementSize` bytes, `stride` apart, starting `offset`
   // bytes into the view; fails unless all of them lie inside the view and the view inside its
   // buffer. Every sum and product is checked: the inputs come straight from the file.
-  const unsigned char* viewBytes(const tinygltf::BufferView& view, int viewIndex, uint64_t offset,
-                                 uint64_t stride, uint64_t count, uint64_t elementSize,
-                                 const std::string& role) const {
+  const unsigned char* viewBytes(const tinygltf::BufferView& view, int viewIndex, uint64_t offset, uint64_t stride,
+                                 uint64_t count, uint64_t elementSize, const std::string& role) const {
     const std::vector<unsigned char>& data = model_.buffers[size_t(view.buffer)].data;
     const std::string viewName = role + "bufferView " + std::to_string(viewIndex);
     uint64_t viewEnd = 0;
     if (view.byteLength == 0) fail(viewName + " has byteLength 0");
-    if (__builtin_add_overflow(uint64_t(view.byteOffset), uint64_t(view.byteLength), &viewEnd) ||
-        viewEnd > data.size())
+    if (__builtin_add_overflow(uint64_t(view.byteOffset), uint64_t(view.byteLength), &viewEnd) || viewEnd > data.size())
       fail(viewName + " (byteOffset " + std::to_string(view.byteOffset) + ", byteLength " +
-           std::to_string(view.byteLength) + ") runs past the end of buffer " + std::to_string(view.buffer) +
-           " (" + std::to_string(data.size()) + " bytes)");
+           std::to_string(view.byteLength) + ") runs past the end of buffer " + std::to_string(view.buffer) + " (" +
+           std::to_string(data.size()) + " bytes)");
     uint64_t span = 0, end = 0;
-    if (__builtin_mul_overflow(stride, count - 1, &span) ||
-        __builtin_add_overflow(span, elementSize, &span) || __builtin_add_overflow(span, offset, &end) ||
-        end > view.byteLength)
+    if (__builtin_mul_overflow(stride, count - 1, &span) || __builtin_add_overflow(span, elementSize, &span) ||
+        __builtin_add_overflow(span, offset, &end) || end > view.byteLength)
       fail(std::to_string(count) + " elements of " + std::to_string(elementSize) + " bytes, stride " +
-           std::to_string(stride) + ", from byte " + std::to_string(offset) + " run past the end of " +
-           viewName + " (byteLength " + std::to_string(view.byteLength) + ")");
+           std::to_string(stride) + ", from byte " + std::to_string(offset) + " run past the end of " + viewName +
+           " (byteLength " + std::to_string(view.byteLength) + ")");
     return data.data() + view.byteOffset + offset;
   }
 
   // Sparse storage: `count` (index, value) pairs override elements of the base data.
-  void applySparse(const tinygltf::Accessor& accessor, const ComponentType& type,
-                   std::vector<double>& values) const {
+  void applySparse(const tinygltf::Accessor& accessor, const ComponentType& type, std::vector<double>& values) const {
     const auto& sparse = accessor.sparse;
     const uint64_t components = uint64_t(request_.components);
     if (sparse.count < 1 || uint64_t(sparse.count) > accessor.count)
-      fail("sparse.count " + std::to_string(sparse.count) + " is not in [1, " +
-           std::to_string(accessor.count) + "]");
+      fail("sparse.count " + std::to_string(sparse.count) + " is not in [1, " + std::to_string(accessor.count) + "]");
     const uint64_t count = uint64_t(sparse.count);
     if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0) fail("sparse byteOffset is negative");
 
@@ -368,16 +361,14 @@ class AccessorReader {
       fail("a bufferView of sparse data has a byteStride, which glTF forbids");
     const uint64_t elementSize = components * type.size;
     const unsigned char* indexBytes =
-        viewBytes(indexView, sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset), indexType->size,
-                  count, indexType->size, "sparse.indices ");
-    const unsigned char* valueBytes =
-        viewBytes(valueView, sparse.values.bufferView, uint64_t(sparse.values.byteOffset), elementSize, count,
-                  elementSize, "sparse.values ");
+        viewBytes(indexView, sparse.indices.bufferView, uint64_t(sparse.indices.byteOffset), indexType->size, count,
+                  indexType->size, "sparse.indices ");
+    const unsigned char* valueBytes = viewBytes(valueView, sparse.values.bufferView, uint64_t(sparse.values.byteOffset),
+                                                elementSize, count, elementSize, "sparse.values ");
     double previous = -1.0;
     for (uint64_t i = 0; i < count; ++i) {
       const double target = decodeComponent(indexBytes + i * indexType->size, indexType->code, false);
-      if (target <= previous)
-        fail("sparse indices are not strictly increasing at sparse element " + std::to_string(i));
+      if (target <= previous) fail("sparse indices are not strictly increasing at sparse element " + std::to_string(i));
       if (target >= double(accessor.count))
         fail("sparse index " + std::to_string(uint64_t(target)) + " is past the count " +
              std::to_string(accessor.count));
@@ -396,8 +387,7 @@ class AccessorReader {
 
 }  // namespace
 
-GltfDocument::GltfDocument(const std::string& path)
-    : path_(path), model_(std::make_unique<tinygltf::Model>()) {
+GltfDocument::GltfDocument(const std::string& path) : path_(path), model_(std::make_unique<tinygltf::Model>()) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);
   if (ec && ec != std::errc::no_such_file_or_directory) throw Error(path, ec.message());
@@ -437,8 +427,7 @@ GltfDocument::GltfDocument(const std::string& path)
   for (const std::string& line : errors) warnings_.push_back("tinygltf: " + line);
   for (const std::string& line : nonEmptyLines(warn)) warnings_.push_back(line);
   if (!model_->images.empty())
-    warnings_.push_back(std::to_string(model_->images.size()) +
-                        " image(s) not decoded: radview draws no textures");
+    warnings_.push_back(std::to_string(model_->images.size()) + " image(s) not decoded: radview draws no textures");
 }
 
 GltfDocument::~GltfDocument() = default;

@@ -3,8 +3,8 @@
 #include "core/error.h"
 #include "core/limits.h"
 
-#include <glm/gtc/constants.hpp>
 #include <tiny_gltf.h>
+#include <glm/gtc/constants.hpp>
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,11 +30,16 @@ const char* const kExtensionsRead[] = {"KHR_mesh_quantization", "KHR_materials_e
 
 const char* modeName(int mode) {
   switch (mode) {
-    case TINYGLTF_MODE_POINTS: return "POINTS";
-    case TINYGLTF_MODE_LINE: return "LINES";
-    case TINYGLTF_MODE_LINE_LOOP: return "LINE_LOOP";
-    case TINYGLTF_MODE_LINE_STRIP: return "LINE_STRIP";
-    default: return "?";
+    case TINYGLTF_MODE_POINTS:
+      return "POINTS";
+    case TINYGLTF_MODE_LINE:
+      return "LINES";
+    case TINYGLTF_MODE_LINE_LOOP:
+      return "LINE_LOOP";
+    case TINYGLTF_MODE_LINE_STRIP:
+      return "LINE_STRIP";
+    default:
+      return "?";
   }
 }
 
@@ -66,8 +71,7 @@ class SceneImporter {
     for (int root : rootNodes(parent)) walk(root);
     summarizeWarnings();
     if (scene_.polygons.empty())
-      fail("no triangles to show (" + std::to_string(trianglePrimitives_) +
-           " triangle primitive(s) in the scene)");
+      fail("no triangles to show (" + std::to_string(trianglePrimitives_) + " triangle primitive(s) in the scene)");
     return std::move(scene_);
   }
 
@@ -82,12 +86,11 @@ class SceneImporter {
     for (int n = 0; n < count; ++n)
       for (int child : model_.nodes[size_t(n)].children) {
         if (child < 0 || child >= count)
-          fail("node " + std::to_string(n) + ": child " + std::to_string(child) +
-               " does not exist (the file has " + std::to_string(count) + " nodes)");
+          fail("node " + std::to_string(n) + ": child " + std::to_string(child) + " does not exist (the file has " +
+               std::to_string(count) + " nodes)");
         if (parent[size_t(child)] != -1)
-          fail("node " + std::to_string(child) + " has two parents (nodes " +
-               std::to_string(parent[size_t(child)]) + " and " + std::to_string(n) +
-               "); glTF nodes must form a tree");
+          fail("node " + std::to_string(child) + " has two parents (nodes " + std::to_string(parent[size_t(child)]) +
+               " and " + std::to_string(n) + "); glTF nodes must form a tree");
         parent[size_t(child)] = n;
       }
     // With one parent each, a node lies on a cycle exactly when climbing from it never ends.
@@ -163,8 +166,7 @@ class SceneImporter {
     const std::string name = "node " + std::to_string(index);
     auto checkVector = [&](const std::vector<double>& v, size_t size, const char* property) {
       if (!v.empty() && v.size() != size)
-        fail(name + ": " + property + " has " + std::to_string(v.size()) + " values, expected " +
-             std::to_string(size));
+        fail(name + ": " + property + " has " + std::to_string(v.size()) + " values, expected " + std::to_string(size));
       if (!finite(v)) fail(name + ": " + property + " is not finite");
     };
     if (!node.matrix.empty()) {
@@ -196,9 +198,8 @@ class SceneImporter {
            " does not exist (the file has " + std::to_string(model_.meshes.size()) + " meshes)");
     const tinygltf::Mesh& mesh = model_.meshes[size_t(node.mesh)];
     for (size_t p = 0; p < mesh.primitives.size(); ++p)
-      addPrimitive(mesh.primitives[p],
-                   "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p), nodeIndex,
-                   worldFromMesh);
+      addPrimitive(mesh.primitives[p], "mesh " + std::to_string(node.mesh) + " primitive " + std::to_string(p),
+                   nodeIndex, worldFromMesh);
   }
 
   void addPrimitive(const tinygltf::Primitive& primitive, const std::string& what, int nodeIndex,
@@ -208,8 +209,7 @@ class SceneImporter {
       ++skippedByMode_[mode];
       return;
     }
-    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
-        mode != TINYGLTF_MODE_TRIANGLE_FAN)
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
       fail(what + ": mode " + std::to_string(mode) + " is not a glTF primitive mode");
     ++trianglePrimitives_;
     if (!primitive.targets.empty()) ++morphedPrimitives_;
@@ -221,19 +221,16 @@ class SceneImporter {
 
     // KHR_mesh_quantization lets positions be (normalized) integers.
     const bool quantized = doc_.usesExtension("KHR_mesh_quantization");
-    const unsigned positionTypes =
-        quantized ? kFloat | kByte | kUnsignedByte | kShort | kUnsignedShort : kFloat;
-    std::vector<Vec3> positions =
-        doc_.readVec3(position->second, {what + " POSITION", 3, positionTypes, quantized});
+    const unsigned positionTypes = quantized ? kFloat | kByte | kUnsignedByte | kShort | kUnsignedShort : kFloat;
+    std::vector<Vec3> positions = doc_.readVec3(position->second, {what + " POSITION", 3, positionTypes, quantized});
     for (Vec3& p : positions) {
       p = Vec3(worldFromMesh * glm::dvec4(p, 1.0));
-      if (!isFinite(p))
-        fail(what + " on node " + std::to_string(nodeIndex) + ": a transformed position is not finite");
+      if (!isFinite(p)) fail(what + " on node " + std::to_string(nodeIndex) + ": a transformed position is not finite");
     }
     std::vector<uint32_t> indices;
     if (primitive.indices >= 0) {
-      indices = doc_.readUnsigned(primitive.indices, what + " indices", positions.size(),
-                                  GltfDocument::Restart::Forbidden);
+      indices =
+          doc_.readUnsigned(primitive.indices, what + " indices", positions.size(), GltfDocument::Restart::Forbidden);
     } else {
       indices.resize(positions.size());
       for (uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
@@ -346,8 +343,7 @@ class SceneImporter {
       warnIf(count, std::string(modeName(mode)) + " primitive(s) skipped: radview shows triangles only");
     warnIf(withoutPosition_, "triangle primitive(s) without POSITION skipped");
     warnIf(tooFewVertices_, "triangle primitive(s) with fewer than 3 vertices skipped");
-    warnIf(ragged_,
-           "TRIANGLES primitive(s) with a vertex count not a multiple of 3: the extra vertices ignored");
+    warnIf(ragged_, "TRIANGLES primitive(s) with a vertex count not a multiple of 3: the extra vertices ignored");
     warnIf(degenerateTriangles_, "degenerate (zero-area) triangle(s) dropped");
     warnIf(clampedMaterials_, "material(s) with a colour factor outside [0,1], clamped");
     warnIf(ignoredCameras_, "orthographic or degenerate camera(s) ignored");

@@ -67,8 +67,7 @@ class QuadMerger {
 
   void weldCorners() {
     std::vector<Vec3> points;
-    for (uint32_t t = 0; t < triangles_.size(); ++t)
-      points.insert(points.end(), corners(t).begin(), corners(t).end());
+    for (uint32_t t = 0; t < triangles_.size(); ++t) points.insert(points.end(), corners(t).begin(), corners(t).end());
     const WeldedPoints welded = weldPoints(points, tolerance_ * scene_.bounds().diagonal());
     for (uint32_t t = 0; t < triangles_.size(); ++t)
       cornerId_.push_back({welded.id[3 * t], welded.id[3 * t + 1], welded.id[3 * t + 2]});

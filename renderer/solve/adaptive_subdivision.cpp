@@ -101,7 +101,8 @@ void MeshRefiner::makeQuadratic(RadiosityMesh& mesh) {
   for (Element& element : mesh.elements) {
     if (!element.midEdge.empty()) continue;
     const size_t n = element.corners.size();
-    for (size_t i = 0; i < n; ++i) element.midEdge.push_back(midNode(mesh, element.corners[i], element.corners[(i + 1) % n]));
+    for (size_t i = 0; i < n; ++i)
+      element.midEdge.push_back(midNode(mesh, element.corners[i], element.corners[(i + 1) % n]));
   }
 }
 
@@ -164,7 +165,8 @@ void MeshRefiner::retag(RadiosityMesh& mesh) const {
     for (size_t i = 0; i < n; ++i) {
       const uint32_t a = element.corners[i], b = element.corners[(i + 1) % n];
       const auto tag = tagOrder_.find(edgeKey(a, b));
-      if (tag != tagOrder_.end() && emitted.insert(tag->first).second) mesh.discontinuities.push_back({a, b, tag->second});
+      if (tag != tagOrder_.end() && emitted.insert(tag->first).second)
+        mesh.discontinuities.push_back({a, b, tag->second});
     }
   }
 }

@@ -61,8 +61,8 @@ class MeshRefiner {
   uint32_t newNode(RadiosityMesh& mesh, const Vec3& position);
   void retag(RadiosityMesh& mesh) const;
 
-  std::unordered_map<uint64_t, uint32_t> mid_;                  // edge (node pair) -> its mid node
-  std::unordered_map<uint64_t, Continuity> tagOrder_;           // tagged edges, by node pair
+  std::unordered_map<uint64_t, uint32_t> mid_;         // edge (node pair) -> its mid node
+  std::unordered_map<uint64_t, Continuity> tagOrder_;  // tagged edges, by node pair
 };
 
 }  // namespace radview

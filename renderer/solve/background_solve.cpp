@@ -79,8 +79,10 @@ void BackgroundSolve::run(Scene scene, SolveSettings settings) {
     };
     show("shooting");
     while (!cancelled_ && solve.step()) {
-      if (solve.phase() == RadiositySolve::Phase::Subdividing) show("subdividing");
-      else if (Clock::now() - last > kPublishEvery) show("shooting");
+      if (solve.phase() == RadiositySolve::Phase::Subdividing)
+        show("subdividing");
+      else if (Clock::now() - last > kPublishEvery)
+        show("shooting");
     }
     show(cancelled_ ? "cancelled" : "solved");
   } catch (const std::exception& e) {

@@ -160,8 +160,8 @@ RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, Di
     r.segmentsDropped += arrangement.dropped;
     // A generous cap on refinement (several times the expected count): small angles between
     // constraints make Delaunay refinement add points near them; never without bound.
-    const size_t maxVertices =
-        size_t(8.0 * area(polygon.vertices) * trianglesPerArea(elementSize)) + 8 * arrangement.graph.points.size() + 1000;
+    const size_t maxVertices = size_t(8.0 * area(polygon.vertices) * trianglesPerArea(elementSize)) +
+                               8 * arrangement.graph.points.size() + 1000;
     const ConstrainedMesh cm = constrainedDelaunayMesh(arrangement.graph, elementSize, maxVertices);
     if (!cm.refinementComplete) ++r.refinementCapped;
     appendPolygon(mesh, cm, arrangement, polygon.vertices, frame, int(p), polygon.material, r);
@@ -174,14 +174,13 @@ RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, Di
 
 std::ostream& operator<<(std::ostream& os, const DiscontinuityMeshReport& r) {
   os << "discontinuity meshing: " << r.eventsFound << " events found (" << r.contactEvents << " D0 contacts, "
-     << r.emitterVertexEvents << " EV, " << r.occluderVertexEvents << " VE), " << r.eventsInserted
-     << " inserted; " << r.occludersSkipped << " (emitter, occluder, receiver) triples culled, " << r.occludersKept
-     << " kept\n"
+     << r.emitterVertexEvents << " EV, " << r.occluderVertexEvents << " VE), " << r.eventsInserted << " inserted; "
+     << r.occludersSkipped << " (emitter, occluder, receiver) triples culled, " << r.occludersKept << " kept\n"
      << "  " << r.segmentsInserted << " segments (C-1 " << r.segmentsCm1 << ", C0 " << r.segmentsC0 << ", C1 "
      << r.segmentsC1 << ")";
   if (r.segmentsDropped > 0) os << ", " << r.segmentsDropped << " dropped past the per-polygon cap";
-  os << "; discontinuity edges C-1 " << r.edgesCm1 << ", C0 " << r.edgesC0 << "\n  " << r.elements
-     << " elements, " << r.nodes << " nodes";
+  os << "; discontinuity edges C-1 " << r.edgesCm1 << ", C0 " << r.edgesC0 << "\n  " << r.elements << " elements, "
+     << r.nodes << " nodes";
   if (r.refinementCapped > 0) os << "; refinement stopped at the vertex cap on " << r.refinementCapped << " polygons";
   return os;
 }

@@ -109,12 +109,12 @@ class SnappedPoints {
     const int64_t cx = cell(p.x), cy = cell(p.y);
     if (!exact)
       for (int64_t dx = -1; dx <= 1; ++dx)
-      for (int64_t dy = -1; dy <= 1; ++dy) {
-        auto it = grid_.find({cx + dx, cy + dy});
-        if (it == grid_.end()) continue;
-        for (int id : it->second)
-          if (glm::distance(points_[id], p) <= tolerance_) return id;
-      }
+        for (int64_t dy = -1; dy <= 1; ++dy) {
+          auto it = grid_.find({cx + dx, cy + dy});
+          if (it == grid_.end()) continue;
+          for (int id : it->second)
+            if (glm::distance(points_[id], p) <= tolerance_) return id;
+        }
     points_.push_back(p);
     grid_[{cx, cy}].push_back(int(points_.size() - 1));
     return int(points_.size() - 1);

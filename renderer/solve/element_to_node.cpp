@@ -35,7 +35,8 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
 
 double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
                                const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch) {
-  return gather(x, shooter, [](const AreaSample&) { return 1.0; }, 1.0, stream, visibility, rays, scratch);
+  return gather(
+      x, shooter, [](const AreaSample&) { return 1.0; }, 1.0, stream, visibility, rays, scratch);
 }
 
 Rgb radiosityFromPatch(const ReceiverPoint& x, const PatchSampler& shooter, const std::vector<Rgb>& polygonB,
@@ -46,8 +47,8 @@ Rgb radiosityFromPatch(const ReceiverPoint& x, const PatchSampler& shooter, cons
   Rgb mean(0.0);
   for (size_t p = 0; p < polygonB.size(); ++p) mean += polygonB[p] * shooter.polygonArea(p);
   mean /= shooter.area();
-  return gather(x, shooter, [&](const AreaSample& s) { return polygonB[s.polygon]; }, mean, stream, visibility,
-                rays, scratch);
+  return gather(
+      x, shooter, [&](const AreaSample& s) { return polygonB[s.polygon]; }, mean, stream, visibility, rays, scratch);
 }
 
 }  // namespace radview

@@ -107,7 +107,8 @@ PatchFormFactor::PatchFormFactor(const std::vector<std::vector<Vec3>>& polygons)
   }
   for (const auto& [edge, count] : edges)
     for (int k = 0; k < count; ++k)
-      outline_.push_back({Vec3(edge.first[0], edge.first[1], edge.first[2]), Vec3(edge.second[0], edge.second[1], edge.second[2])});
+      outline_.push_back(
+          {Vec3(edge.first[0], edge.first[1], edge.first[2]), Vec3(edge.second[0], edge.second[1], edge.second[2])});
   size_ = bounds.diagonal();
 }
 

@@ -33,10 +33,10 @@ class PatchFormFactor {
   double from(const Vec3& x, const Vec3& n) const;
 
  private:
-  std::vector<std::vector<Vec3>> polygons_;  // the non-degenerate ones
+  std::vector<std::vector<Vec3>> polygons_;   // the non-degenerate ones
   std::vector<std::array<Vec3, 2>> outline_;  // directed edges not cancelled by their reverse
   Vec3 normal_{0.0}, pointOnPlane_{0.0};
-  double size_ = 0.0;                        // bounding diagonal
+  double size_ = 0.0;  // bounding diagonal
 };
 
 }  // namespace radview

@@ -49,7 +49,8 @@ PatchSampler::PatchSampler(const std::vector<std::vector<Vec3>>& polygons, int s
     // stratifies better than two triangles would.
     if (corners.size() == 4 && isStrictlyConvex(corners) &&
         planarityError(corners) <= 1e-6 * glm::distance(corners[0], corners[2])) {
-      pieces_.push_back({corners[0], corners[1], corners[2], corners[3], true, polygon, gridSide(radview::area(corners)), 0.0});
+      pieces_.push_back(
+          {corners[0], corners[1], corners[2], corners[3], true, polygon, gridSide(radview::area(corners)), 0.0});
       continue;
     }
     for (const auto& t : triangulatePolygon(corners)) {

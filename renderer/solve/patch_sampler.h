@@ -57,8 +57,8 @@ class PatchSampler {
     Vec3 a, b, c, d;  // a triangle (a, b, c), or a bilinear quad (a, b, c, d) when `quad`
     bool quad = false;
     uint32_t polygon = 0;
-    int k = 1;           // k x k grid
-    double weight = 0.0; // triangle: area / k^2 (the map below preserves area)
+    int k = 1;            // k x k grid
+    double weight = 0.0;  // triangle: area / k^2 (the map below preserves area)
   };
   PatchFormFactor unoccluded_;
   std::vector<Piece> pieces_;

@@ -35,7 +35,8 @@ RadiosityMesh validated(RadiosityMesh mesh) {
                    "converge)";
       else if (!(material.E[k] >= 0.0 && std::isfinite(material.E[k])))
         problem << "emission E " << material.E[k] << " in " << channel[k] << ": it must be finite and >= 0";
-      if (!problem.str().empty()) throw Error("material " + std::to_string(m) + " '" + material.name + "' has " + problem.str());
+      if (!problem.str().empty())
+        throw Error("material " + std::to_string(m) + " '" + material.name + "' has " + problem.str());
     }
     emits |= material.isEmitter();
   }
@@ -46,7 +47,10 @@ RadiosityMesh validated(RadiosityMesh mesh) {
 }  // namespace
 
 ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings)
-    : settings_(settings), mesh_(validated(std::move(mesh))), refiner_(mesh_), rayCaster_(std::make_unique<RayCaster>(scene)) {
+    : settings_(settings),
+      mesh_(validated(std::move(mesh))),
+      refiner_(mesh_),
+      rayCaster_(std::make_unique<RayCaster>(scene)) {
   for (const Polygon& polygon : scene.polygons) surfaceNormals_.push_back(unitNormal(polygon.vertices));
   sceneDiagonal_ = scene.bounds().diagonal();
   // Every element is its own patch, or a group of elements is (the first one's material and

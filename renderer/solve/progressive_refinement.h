@@ -18,10 +18,10 @@ namespace radview {
 
 struct SolverSettings {
   uint64_t seed = 1;
-  int samples = 16;                    // shooter samples per receiving node and shot
-  double stopUnshotFraction = 0.01;    // stop once unshot power <= this * emitted power
-  size_t maxShots = 100000;            // and after this many shots in any case
-  bool quadratic = false;              // make the elements quadratic (mid-edge nodes) first
+  int samples = 16;                  // shooter samples per receiving node and shot
+  double stopUnshotFraction = 0.01;  // stop once unshot power <= this * emitted power
+  size_t maxShots = 100000;          // and after this many shots in any case
+  bool quadratic = false;            // make the elements quadratic (mid-edge nodes) first
   // > 0: the initial elements are grouped into shooting patches of about this size
   // (shooting_patches.h), as a discontinuity mesh needs; 0: every initial element is a patch.
   double shooterSize = 0.0;
@@ -48,8 +48,8 @@ class ProgressiveRefinement {
  public:
   // `mesh`: any valid radiosity mesh of `scene` (elements on the scene's polygons, the scene's
   // materials), e.g. meshUniformly's or a discontinuity mesher's; its elements, or groups of
-  // them (SolverSettings::shooterSize), become the patches. Throws Error when the mesh fails validateMesh or has no element, when no element
-  // emits, or when a material's rho is not in [0, 1) or E is negative or not finite: rho = 1
+  // them (SolverSettings::shooterSize), become the patches. Throws Error when the mesh fails validateMesh or has no
+  // element, when no element emits, or when a material's rho is not in [0, 1) or E is negative or not finite: rho = 1
   // would never absorb, so the solution would not converge.
   ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings);
   ~ProgressiveRefinement();
@@ -105,8 +105,8 @@ class ProgressiveRefinement {
   std::vector<Vec3> surfaceNormals_;  // of the scene's polygons
   double sceneDiagonal_ = 0.0;
   std::vector<Patch> patches_;
-  std::vector<Piece> pieceOf_;        // per element
-  std::vector<double> elementArea_;   // per element
+  std::vector<Piece> pieceOf_;       // per element
+  std::vector<double> elementArea_;  // per element
   // Per node, from the first element that uses it: the point and normal it receives at, its
   // scene polygon, its material (-1: no element uses it yet); and its gathered radiosity H, the
   // sum of deltaB F over the shots, so that B = E + rho H.

@@ -28,7 +28,8 @@ RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, Dis
 
 RadiositySolve::RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report)
     : settings_(resolvedFor(scene, settings)),
-      solver_(std::make_unique<ProgressiveRefinement>(scene, initialMesh(scene, settings_, report), settings_.solver)) {}
+      solver_(std::make_unique<ProgressiveRefinement>(scene, initialMesh(scene, settings_, report), settings_.solver)) {
+}
 
 bool RadiositySolve::step() {
   if (phase_ == Phase::Shooting) {

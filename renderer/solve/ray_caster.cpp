@@ -24,7 +24,8 @@ struct RayCaster::Embree {
 RayCaster::RayCaster(const Scene& scene) : embree_(std::make_unique<Embree>()) {
   for (size_t p = 0; p < scene.polygons.size(); ++p)
     for (const Vec3& v : scene.polygons[p].vertices)
-      if (!isFinite(v)) throw Error("ray casting: polygon " + std::to_string(p) + " has a vertex that is not a finite number");
+      if (!isFinite(v))
+        throw Error("ray casting: polygon " + std::to_string(p) + " has a vertex that is not a finite number");
   const Bounds bounds = scene.bounds();
   const double diagonal = bounds.diagonal();
   if (!std::isfinite(diagonal))

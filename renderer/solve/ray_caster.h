@@ -73,7 +73,7 @@ class RayCaster {
   struct Embree;
   std::unique_ptr<Embree> embree_;
   Vec3 center_{0.0};
-  double scale_ = 1.0;  // world -> Embree: (p - center_) * scale_
+  double scale_ = 1.0;                     // world -> Embree: (p - center_) * scale_
   std::vector<uint32_t> trianglePolygon_;  // Embree's primitive ID -> scene polygon
   std::vector<Vec3> polygonNormals_;       // unit, by scene polygon (zero for skipped ones)
   size_t triangleCount_ = 0;

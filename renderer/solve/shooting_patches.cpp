@@ -54,7 +54,8 @@ std::vector<uint32_t> groupIntoShootingPatches(const Scene& scene, const Radiosi
       continue;
     }
     const auto [column, row] = grids[element.surface]->cellOf(centroid(mesh.cornerPositions(e)));
-    const auto [cell, added] = patchOfCell.emplace(std::make_tuple(element.surface, element.material, column, row), patches);
+    const auto [cell, added] =
+        patchOfCell.emplace(std::make_tuple(element.surface, element.material, column, row), patches);
     if (added) ++patches;
     patchOf[e] = cell->second;
   }

@@ -21,10 +21,10 @@ TEST(BenchVariants, EveryMethodPerPixelAndThePiecesAtEveryLevelAndTolerance) {
   for (const MethodInfo& info : methodRegistry())
     EXPECT_EQ(rows[info.method], info.bezierPieces ? 4 : 1) << info.name << ": per pixel, 2 levels, 1 tolerance";
   EXPECT_EQ(variants.front().setting, "per pixel");
-  const BenchVariant& adaptive = variants[size_t(std::find_if(variants.begin(), variants.end(), [](const BenchVariant& v) {
-                                                   return v.tessellation == kAdaptive;
-                                                 }) -
-                                                 variants.begin())];
+  const BenchVariant& adaptive =
+      variants[size_t(std::find_if(variants.begin(), variants.end(),
+                                   [](const BenchVariant& v) { return v.tessellation == kAdaptive; }) -
+                      variants.begin())];
   EXPECT_EQ(adaptive.setting, "adaptive 0.5");
   EXPECT_EQ(adaptive.method, Method::Quadratic) << "registry order";
 }

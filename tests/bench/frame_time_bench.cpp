@@ -48,14 +48,14 @@ void frame(benchmark::State& state, Method method, int tessellation) {
 }
 
 void registerAll() {
-  for (Method m : {Method::Flat, Method::Gouraud, Method::ScanlineGouraud,
-                          Method::Bilinear})
+  for (Method m : {Method::Flat, Method::Gouraud, Method::ScanlineGouraud, Method::Bilinear})
     benchmark::RegisterBenchmark(methodName(m).c_str(), frame, m, 0)->Unit(benchmark::kMillisecond);
   for (Method m : {Method::Quadratic, Method::C1Quadratic, Method::CloughTocher})
     for (int level : {0, 1, 4, 16, kAdaptiveTessellation}) {
       const std::string name = methodName(m) + "/" +
-                               (level == 0 ? std::string("per-pixel")
-                                           : level < 0 ? std::string("adaptive") : "level-" + std::to_string(level));
+                               (level == 0  ? std::string("per-pixel")
+                                : level < 0 ? std::string("adaptive")
+                                            : "level-" + std::to_string(level));
       benchmark::RegisterBenchmark(name.c_str(), frame, m, level)->Unit(benchmark::kMillisecond)->MinTime(0.5);
     }
 }

@@ -13,13 +13,13 @@
 #include "mesh/load_file.h"
 #include "solve/direct_light.h"
 
+#include <malloc.h>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <malloc.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,8 +55,7 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
 }
 
-void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height,
-             const std::string& only) {
+void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height, const std::string& only) {
   const auto meshStart = Clock::now();
   const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
   const double meshSeconds = secondsSince(meshStart);
@@ -70,7 +69,8 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
                                                {"quadratic", Method::Quadratic, 0},
                                                {"c1-quadratic", Method::C1Quadratic, 0},
                                                {"clough-tocher", Method::CloughTocher, 0}})
-    if (variants.empty() || only.empty() || ("," + only + ",").find("," + std::string(v.name) + ",") != std::string::npos)
+    if (variants.empty() || only.empty() ||
+        ("," + only + ",").find("," + std::string(v.name) + ",") != std::string::npos)
       variants.push_back(v);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
   std::vector<std::unique_ptr<MeshRenderer>> renderers;
@@ -99,15 +99,16 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
       glFinish();
       ms[i].push_back(1e3 * secondsSince(start));
     }
-  std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n",
-              mesh.elements.size(), elementSize, meshSeconds, width, height, rounds);
-  std::printf("| method | median ms | IQR ms | / Gouraud | first frame s | held MB | / Gouraud |\n"
-              "|---|---|---|---|---|---|---|\n");
+  std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n", mesh.elements.size(),
+              elementSize, meshSeconds, width, height, rounds);
+  std::printf(
+      "| method | median ms | IQR ms | / Gouraud | first frame s | held MB | / Gouraud |\n"
+      "|---|---|---|---|---|---|---|\n");
   const double gouraud = quantile(ms[0], 0.5);
   for (size_t i = 0; i < variants.size(); ++i)
     std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f | %.0f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i],
-                heldMb[i], heldMb[i] / heldMb[0]);
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i], heldMb[i],
+                heldMb[i] / heldMb[0]);
   std::fflush(stdout);
 }
 
@@ -120,10 +121,14 @@ int main(int argc, char** argv) {
   int rounds = 15, width = 1920, height = 1080;
   std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--element-size")) sizes.push_back(std::atof(argv[i + 1]));
-    else if (!std::strcmp(argv[i], "--rounds")) rounds = std::max(1, std::atoi(argv[i + 1]));
-    else if (!std::strcmp(argv[i], "--size")) std::sscanf(argv[i + 1], "%dx%d", &width, &height);
-    else if (!std::strcmp(argv[i], "--methods")) methods = argv[i + 1];
+    if (!std::strcmp(argv[i], "--element-size"))
+      sizes.push_back(std::atof(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--rounds"))
+      rounds = std::max(1, std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--size"))
+      std::sscanf(argv[i + 1], "%dx%d", &width, &height);
+    else if (!std::strcmp(argv[i], "--methods"))
+      methods = argv[i + 1];
     else {
       std::fprintf(stderr, "radview_scale_bench: unknown option %s\n", argv[i]);
       return 2;

@@ -80,7 +80,8 @@ std::vector<Segment> firstShotSegments(const Fixture& f) {
       sampler.draw(stream, samples);
       for (const AreaSample& s : samples) {
         const Vec3 d = s.position - x;
-        if (glm::dot(n, d) > 0.0 && -glm::dot(sampler.normal(), d) > 0.0) segments.push_back({x, n, s.position, sampler.normal()});
+        if (glm::dot(n, d) > 0.0 && -glm::dot(sampler.normal(), d) > 0.0)
+          segments.push_back({x, n, s.position, sampler.normal()});
       }
     }
   }
@@ -103,13 +104,16 @@ void EmbreeOccluded1(benchmark::State& state) {
   auto* scene = static_cast<RTCScene>(caster.embreeScene());
   std::atomic<uint64_t> occluded{0};
   for (auto _ : state) {
-    parallelFor(rays.size(), [&](size_t i) {
-      RTCRay ray = rays[i];
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      rtcOccluded1(scene, &context, &ray);
-      if (ray.tfar < 0.0f) ++occluded;
-    }, 1024);
+    parallelFor(
+        rays.size(),
+        [&](size_t i) {
+          RTCRay ray = rays[i];
+          RTCIntersectContext context;
+          rtcInitIntersectContext(&context);
+          rtcOccluded1(scene, &context, &ray);
+          if (ray.tfar < 0.0f) ++occluded;
+        },
+        1024);
   }
   benchmark::DoNotOptimize(occluded.load());
   state.counters["rays/s"] = benchmark::Counter(double(rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
@@ -132,7 +136,15 @@ void SolveTime(benchmark::State& state) {
 
 BENCHMARK(SolverShot)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(EmbreeOccluded1)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(SolveTime)->Arg(1000)->Arg(2000)->Arg(4000)->Arg(8000)->Arg(16000)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(SolveTime)
+    ->Arg(1000)
+    ->Arg(2000)
+    ->Arg(4000)
+    ->Arg(8000)
+    ->Arg(16000)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace radview

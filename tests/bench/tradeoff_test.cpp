@@ -16,7 +16,7 @@ TradeoffRow row(const char* method, double ms, double error) {
 }
 
 TEST(TradeoffTest, ParetoFrontKeepsRowsNoOtherBeatsOnBothAxes) {
-  std::vector<TradeoffRow> rows = {row("fast", 1, 9), row("slow-good", 10, 1), row("dominated", 5, 9.5),
+  std::vector<TradeoffRow> rows = {row("fast", 1, 9),   row("slow-good", 10, 1),   row("dominated", 5, 9.5),
                                    row("middle", 3, 4), row("tie-slower", 3.5, 4), row("same", 3, 4)};
   markParetoFront(rows);
   EXPECT_TRUE(rows[0].pareto);

@@ -113,8 +113,9 @@ TEST_F(AtomicFileTest, AFailedWriteOfANewFileLeavesNothing) {
 
 TEST_F(AtomicFileTest, AMissingFolderOrAFolderAsTargetIsRefused) {
   const std::string missing = errorOf([&] { writeFileAtomically(path("no/such/x.txt").string(), "x"); });
-  EXPECT_NE(missing.find("no/such/x.txt: the folder " + path("no/such").string() + " does not exist; no file was written"),
-            std::string::npos)
+  EXPECT_NE(
+      missing.find("no/such/x.txt: the folder " + path("no/such").string() + " does not exist; no file was written"),
+      std::string::npos)
       << missing;
   fs::create_directory(path("folder"));
   const std::string folder = errorOf([&] { writeFileAtomically(path("folder").string(), "x"); });

@@ -42,7 +42,8 @@ TEST(Camera, EyeTargetUpSpec) {
 }
 
 TEST(Camera, BadSpecsAreClearErrors) {
-  for (const char* spec : {"nowhere", "1,2/3,4,5", "0,0,0/0,0,0", "0,0,1/0,0,0/0,0,1", "0,0,1/0,0,nan", "a,b,c/0,0,0"}) {
+  for (const char* spec :
+       {"nowhere", "1,2/3,4,5", "0,0,0/0,0,0", "0,0,1/0,0,0/0,0,1", "0,0,1/0,0,nan", "a,b,c/0,0,0"}) {
     try {
       cameraFromSpec(spec, unitBox(), {});
       ADD_FAILURE() << "accepted " << spec;

@@ -1,7 +1,7 @@
 // displayDifference: the numbers the difference view reports, against hand-computed ones.
+#include "core/image_difference.h"
 #include "core/display_transform.h"
 #include "core/error.h"
-#include "core/image_difference.h"
 
 #include <gtest/gtest.h>
 
@@ -50,9 +50,9 @@ TEST(DisplayDifference, ComparesDisplayedLuminance) {
 TEST(DisplayDifference, SkipsUncoveredAndNonFinitePixels) {
   LinearImage render = uniform(3, 1, 0.5f);
   LinearImage reference = uniform(3, 1, 0.5f);
-  render.rgba[3] = 0.0f;                     // pixel 0 not covered in the render
-  reference.rgba[4] = std::nanf("");         // pixel 1 NaN in the reference
-  reference.rgba[8] = 0.0f;                  // pixel 2 differs: black
+  render.rgba[3] = 0.0f;              // pixel 0 not covered in the render
+  reference.rgba[4] = std::nanf("");  // pixel 1 NaN in the reference
+  reference.rgba[8] = 0.0f;           // pixel 2 differs: black
   const DisplayDifference d = displayDifference(render, ReferenceImage{reference, true, "r"}, 1.0);
   EXPECT_EQ(d.pixels, 1u);
   EXPECT_NEAR(d.maxAbs, 0.2126 * srgbEncode(0.5), 1e-7);
@@ -63,7 +63,8 @@ TEST(DisplayDifference, RefusesImagesOfAnotherSizeNamingTheReference) {
     displayDifference(uniform(4, 4, 0.1f), ReferenceImage{uniform(4, 3, 0.1f), true, "ref.exr"}, 1.0);
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("ref.exr: the reference is 4x3, the render 4x4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("ref.exr: the reference is 4x3, the render 4x4"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -19,8 +19,10 @@ class MaxMemoryVariable {
     setenv("RADVIEW_MAX_MEMORY", value, 1);
   }
   ~MaxMemoryVariable() {
-    if (hadOld_) setenv("RADVIEW_MAX_MEMORY", old_.c_str(), 1);
-    else unsetenv("RADVIEW_MAX_MEMORY");
+    if (hadOld_)
+      setenv("RADVIEW_MAX_MEMORY", old_.c_str(), 1);
+    else
+      unsetenv("RADVIEW_MAX_MEMORY");
   }
 
  private:
@@ -41,8 +43,8 @@ TEST(MemoryBudget, ByteSizesTakeBinarySuffixes) {
 }
 
 TEST(MemoryBudget, RefusesPastWhatIsAvailableNamingBoth) {
-  const std::string message = errorOf(
-      [] { checkMemory("--size 4096x4096", "the final gather", uint64_t(1800) << 20, uint64_t(1) << 30); });
+  const std::string message =
+      errorOf([] { checkMemory("--size 4096x4096", "the final gather", uint64_t(1800) << 20, uint64_t(1) << 30); });
   EXPECT_EQ(message,
             "--size 4096x4096: needs about 1.8 GiB of memory for the final gather, more than the 1.0 GiB this machine "
             "has available; use a smaller size");
@@ -61,7 +63,9 @@ TEST(MemoryBudget, TheVariableOverridesTheMachine) {
   {
     const MaxMemoryVariable variable("3G");
     EXPECT_EQ(availableMemoryBytes(), uint64_t(3) << 30);
-    EXPECT_NE(errorOf([] { checkMemory("w", "z", uint64_t(4) << 30); }).find("than the 3.0 GiB that RADVIEW_MAX_MEMORY allows"),
+    EXPECT_NE(errorOf([] {
+                checkMemory("w", "z", uint64_t(4) << 30);
+              }).find("than the 3.0 GiB that RADVIEW_MAX_MEMORY allows"),
               std::string::npos);
   }
   const MaxMemoryVariable variable("plenty");

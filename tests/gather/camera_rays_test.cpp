@@ -33,8 +33,8 @@ TEST(CameraRaysTest, EveryPointOnARayProjectsBackToItsImagePoint) {
   const Camera camera = tiltedCamera();
   const int width = 200, height = 100;
   const CameraRays rays(camera, width, height);
-  for (Vec2 pixel : {Vec2(0.5, 0.5), Vec2(199.5, 0.5), Vec2(0.5, 99.5), Vec2(150.5, 20.5), Vec2(0.0, 100.0),
-                     Vec2(37.25, 81.75)}) {
+  for (Vec2 pixel :
+       {Vec2(0.5, 0.5), Vec2(199.5, 0.5), Vec2(0.5, 99.5), Vec2(150.5, 20.5), Vec2(0.0, 100.0), Vec2(37.25, 81.75)}) {
     const Ray ray = rays.through(pixel.x, pixel.y);
     EXPECT_EQ(ray.origin, camera.eye);
     EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-12);

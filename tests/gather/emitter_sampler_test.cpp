@@ -15,7 +15,8 @@ TEST(EmitterSamplerTest, PicksEmittersByPowerWithTheMatchingDensity) {
   // Two emitters: a 1 x 1 square of E 1 and a 2 x 1 rectangle of E 3 (power 1 : 6), and a
   // non-emitting floor, which is never picked.
   Scene scene;
-  scene.materials = {{"floor", {0.5, 0.5, 0.5}, {0, 0, 0}}, {"dim", {0, 0, 0}, {1, 1, 1}}, {"bright", {0, 0, 0}, {3, 3, 3}}};
+  scene.materials = {
+      {"floor", {0.5, 0.5, 0.5}, {0, 0, 0}}, {"dim", {0, 0, 0}, {1, 1, 1}}, {"bright", {0, 0, 0}, {3, 3, 3}}};
   scene.polygons.push_back({{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}}, 0});
   scene.polygons.push_back({{{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}}, 1});
   scene.polygons.push_back({{{2, 0, 1}, {2, 1, 1}, {4, 1, 1}, {4, 0, 1}}, 2});

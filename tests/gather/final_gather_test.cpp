@@ -92,9 +92,10 @@ TEST(FinalGatherTest, ReceiverUnderASquareEmitterConvergesToTheExactFormFactorAt
     ASSERT_EQ(gather.samplesPerPixel(), spp);
     figures.push_back(errorAgainst(gather.image(), expected));
     const ErrorFigures& f = figures.back();
-    std::printf("receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error %+.6f, "
-                "%zu pixels\n",
-                spp, f.rmse, 100.0 * f.rmse / f.meanExpected, f.meanExpected, f.meanSigned, f.pixels);
+    std::printf(
+        "receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error %+.6f, "
+        "%zu pixels\n",
+        spp, f.rmse, 100.0 * f.rmse / f.meanExpected, f.meanExpected, f.meanSigned, f.pixels);
   }
   ASSERT_GT(figures[0].pixels, 1000u);  // a third of the image is receiver, fully
   // Error ~ N^-1/2: a factor 2 per 4x samples. Bounds allow 25% either way on the factor
@@ -142,10 +143,10 @@ TEST(FinalGatherTest, FurnaceGivesEOverOneMinusRho) {
     // has unbounded variance there, so the spread is judged by quantiles, not an RMSE.
     std::sort(errors.begin(), errors.end());
     const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
-    std::printf("furnace, %s B^, 32 spp: mean %.5f %.5f %.5f (exact %.5f %.5f %.5f), relative error median %.2f%%, "
-                "90th percentile %.2f%%\n",
-                methodName(method).c_str(), mean.r, mean.g, mean.b, exact.r, exact.g, exact.b,
-                100.0 * median, 100.0 * p90);
+    std::printf(
+        "furnace, %s B^, 32 spp: mean %.5f %.5f %.5f (exact %.5f %.5f %.5f), relative error median %.2f%%, "
+        "90th percentile %.2f%%\n",
+        methodName(method).c_str(), mean.r, mean.g, mean.b, exact.r, exact.g, exact.b, 100.0 * median, 100.0 * p90);
     // The standard error of the mean is the RMSE / 48, about 0.2%: 1% is 5 of them.
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], exact[c], 0.01 * exact[c]) << methodName(method);
     EXPECT_LT(median, 0.08) << methodName(method);

@@ -140,7 +140,7 @@ TEST(PolygonTest, ConvexityClassifiesCorners) {
   EXPECT_FALSE(isConvex(lShape()));
   std::vector<Vec3> pentagram;
   for (int i = 0; i < 5; ++i) pentagram.push_back({std::cos(4 * kPi * i / 5), std::sin(4 * kPi * i / 5), 0});
-  EXPECT_FALSE(isConvex(pentagram));  // every turn is left, but it winds twice
+  EXPECT_FALSE(isConvex(pentagram));                                     // every turn is left, but it winds twice
   EXPECT_FALSE(isConvex({{0, 0, 0}, {2, 0, 0}, {1, 0, 0}, {1, 1, 0}}));  // folds back on itself
   EXPECT_FALSE(isConvex({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}));             // degenerate
 }
@@ -152,8 +152,7 @@ TEST(PolygonTest, PlaneFrameIsRightHandedAndKeepsOrientation) {
   EXPECT_NEAR(glm::length(f.u), 1.0, 1e-15);
   EXPECT_NEAR(glm::distance(glm::cross(f.u, f.v), f.n), 0.0, 1e-15);
   double signedArea = 0.0;
-  for (size_t i = 0; i < l.size(); ++i)
-    signedArea += cross2(f.project(l[i]), f.project(l[(i + 1) % l.size()]));
+  for (size_t i = 0; i < l.size(); ++i) signedArea += cross2(f.project(l[i]), f.project(l[(i + 1) % l.size()]));
   EXPECT_NEAR(0.5 * signedArea, 3.0, 1e-12);
   EXPECT_THROW(planeFrame({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), Error);
 }
@@ -178,8 +177,7 @@ TEST(PolygonTest, CollinearCornersGetNoZeroAreaTriangle) {
                                         {1, 1, 0}, {0.5, 1, 0}, {0, 1, 0}, {0, 0.5, 0}};
   const auto triangles = triangulatePolygon(withMidpoints);
   expectExactCover(withMidpoints, triangles);
-  for (const auto& t : triangles)
-    EXPECT_GT(area({withMidpoints[t[0]], withMidpoints[t[1]], withMidpoints[t[2]]}), 0.1);
+  for (const auto& t : triangles) EXPECT_GT(area({withMidpoints[t[0]], withMidpoints[t[1]], withMidpoints[t[2]]}), 0.1);
 }
 
 // Property: random star-shaped (so simple, mostly concave) polygons in random planes.

@@ -9,12 +9,10 @@
 
 #include <gtest/gtest.h>
 
-
 namespace radview::gl {
 namespace {
 
-test::PixelComparison compare(Method gpuMethod, Method cpuMethod, CloughTocherVariant variant,
-                              double tolerance) {
+test::PixelComparison compare(Method gpuMethod, Method cpuMethod, CloughTocherVariant variant, double tolerance) {
   EglContext context;
   MeshRenderer renderer;
   const RadiosityMesh mesh = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/discontinuities.gltf").mesh;
@@ -59,7 +57,8 @@ TEST(C1Gpu, PowellSabinPerPixelIsTheCpuReference) {
 
 TEST(C1Gpu, ComparisonDiscriminates) {
   // The same check between different methods fails: it is not vacuous.
-  const test::PixelComparison c = compare(Method::Gouraud, Method::CloughTocher, CloughTocherVariant::AffineInvariant, 1e-5);
+  const test::PixelComparison c =
+      compare(Method::Gouraud, Method::CloughTocher, CloughTocherVariant::AffineInvariant, 1e-5);
   EXPECT_LT(c.withinTolerance, c.pixels / 2);
 }
 

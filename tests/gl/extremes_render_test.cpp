@@ -116,7 +116,8 @@ size_t displayGarbage(const Image& image, bool grey, int barColumns, MustCover m
       const bool coloured = std::abs(p[0] - p[1]) > 1 || std::abs(p[1] - p[2]) > 1;
       if ((background && mustCover(x, y)) || (grey && !background && coloured)) {
         if (garbage++ == 0)
-          std::cout << "  garbage at " << x << "," << y << ": " << int(p[0]) << " " << int(p[1]) << " " << int(p[2]) << "\n";
+          std::cout << "  garbage at " << x << "," << y << ": " << int(p[0]) << " " << int(p[1]) << " " << int(p[2])
+                    << "\n";
       }
     }
   return garbage;
@@ -167,9 +168,8 @@ class ExtremesRender : public ::testing::Test {
       savePngOnFailure(display, what, linear.nonFinite + linear.uncovered + linear.outOfRange + garbage > 0);
       uncovered += linear.uncovered;
       if (linear.uncovered + linear.nonFinite + linear.outOfRange + garbage > 0)
-        std::cout << "  " << what << ": " << linear.uncovered << " uncovered, " << linear.nonFinite
-                  << " not finite, " << linear.outOfRange << " outside the nodal range, " << garbage
-                  << " garbage in the display\n";
+        std::cout << "  " << what << ": " << linear.uncovered << " uncovered, " << linear.nonFinite << " not finite, "
+                  << linear.outOfRange << " outside the nodal range, " << garbage << " garbage in the display\n";
     }
     return uncovered;
   }
@@ -183,8 +183,9 @@ TEST_F(ExtremesRender, ClosedBoxSeenFromInsideIsWatertightAndFiniteAtEveryScale)
     size_t uncovered = 0;
     const std::vector<test::NamedView> views = insideViews();
     for (size_t k = 0; k < views.size(); ++k)
-      uncovered += renderEveryMethodInside(placement.name + ", " + views[k].name,
-                                           extremeCamera(placement, views[k].eye, views[k].target, views[k].up), k == 0);
+      uncovered +=
+          renderEveryMethodInside(placement.name + ", " + views[k].name,
+                                  extremeCamera(placement, views[k].eye, views[k].target, views[k].up), k == 0);
     std::cout << placement.name << ": " << uncovered << " uncovered pixels over every view and method\n";
   }
 }
@@ -201,10 +202,9 @@ TEST_F(ExtremesRender, EveryViewAtBothEndsOfTheDynamicRangeShowsNoGarbage) {
                                        : extremeCamera(placement, Vec3(0.25), Vec3(1.0), {0, 1, 0}, 100.0);
     renderer.render(camera, settingsFor({"gouraud", Method::Gouraud}), width, height);
     renderer.setReferenceImage(ReferenceImage{renderer.readLinear(), true, "gouraud"});
-    for (const MethodConfig& config : {MethodConfig{"gouraud", Method::Gouraud},
-                                       MethodConfig{"clough-tocher exact", Method::CloughTocher},
-                                       MethodConfig{"c1-quadratic adaptive", Method::C1Quadratic,
-                                                    kAdaptiveTessellation}})
+    for (const MethodConfig& config :
+         {MethodConfig{"gouraud", Method::Gouraud}, MethodConfig{"clough-tocher exact", Method::CloughTocher},
+          MethodConfig{"c1-quadratic adaptive", Method::C1Quadratic, kAdaptiveTessellation}})
       for (DisplayView view : {DisplayView::Normal, DisplayView::Value, DisplayView::GradientMagnitude,
                                DisplayView::Isolines, DisplayView::Difference})
         for (auto comparison : {RenderSettings::Comparison::Method, RenderSettings::Comparison::Image}) {
@@ -328,15 +328,16 @@ TEST_F(ExtremesRender, PlaneWithTVerticesCoversEveryPixelInsideItsOutline) {
     EXPECT_EQ(tVertices, 4512u);
     // Oblique views from both sides, one 1 degree from edge-on.
     const Vec3 centre = p0 + 0.4 * (a + b);
-    const std::vector<Vec3> eyes = {centre + 0.9 * n + 0.3 * a, centre - 0.7 * n - 0.5 * b,
-                                    centre + 0.6 * (n + a + b), centre + std::tan(M_PI / 180.0) * n + 0.9 * a};
+    const std::vector<Vec3> eyes = {centre + 0.9 * n + 0.3 * a, centre - 0.7 * n - 0.5 * b, centre + 0.6 * (n + a + b),
+                                    centre + std::tan(M_PI / 180.0) * n + 0.9 * a};
     for (size_t k = 0; k < eyes.size(); ++k) {
       const Camera camera = extremeCamera(placement, eyes[k], centre, Vec3(0, 1, 0), 70.0);
       // Whether the ray through a pixel centre meets the square (in the unit box's frame).
       const glm::dmat4 worldFromClip = glm::inverse(camera.clipFromWorld(1.0));
       auto insideSquare = [&](int x, int y) {
         const double nx = (x + 0.5) / size * 2 - 1, ny = 1 - (y + 0.5) / size * 2;
-        const glm::dvec4 near = worldFromClip * glm::dvec4(nx, ny, -1, 1), far = worldFromClip * glm::dvec4(nx, ny, 1, 1);
+        const glm::dvec4 near = worldFromClip * glm::dvec4(nx, ny, -1, 1),
+                         far = worldFromClip * glm::dvec4(nx, ny, 1, 1);
         const Vec3 from = (Vec3(near) / near.w - placement.origin) / placement.scale + Vec3(0.5);
         const Vec3 to = (Vec3(far) / far.w - placement.origin) / placement.scale + Vec3(0.5);
         const double t = glm::dot(p0 - from, n) / glm::dot(to - from, n);

@@ -68,8 +68,10 @@ TEST_F(Fig914Test, C1MethodsRemoveTheMachBandsOfLinearAtElementEdges) {
   const double linear = meanGradientJump(render(mesh, Method::Gouraud), 1.0, stencils.smooth);
   const double quadratic = meanGradientJump(render(unrelaxed, Method::C1Quadratic), 1.0, stencils.smooth);
   const double cloughTocher = meanGradientJump(render(mesh, Method::CloughTocher), 1.0, stencils.smooth);
-  std::printf("Mach bands (mean gradient jump across untagged edges, steps/px): linear %.3f, C1 quadratic %.3f, "
-              "Clough-Tocher %.3f\n", linear, quadratic, cloughTocher);
+  std::printf(
+      "Mach bands (mean gradient jump across untagged edges, steps/px): linear %.3f, C1 quadratic %.3f, "
+      "Clough-Tocher %.3f\n",
+      linear, quadratic, cloughTocher);
   EXPECT_LT(quadratic, 0.25 * linear);
   EXPECT_LT(cloughTocher, 0.25 * linear);
 }
@@ -86,8 +88,10 @@ TEST_F(Fig914Test, C1QuadraticSmoothsTheRealShadowKinksWhichRelaxedCloughTocherK
   const double noise = meanGradientJump(reference.image(), 1.0, stencils.smooth);
   const double quadratic = meanGradientJump(render(unrelaxed, Method::C1Quadratic), 1.0, stencils.c0);
   const double cloughTocher = meanGradientJump(render(mesh, Method::CloughTocher), 1.0, stencils.c0);
-  std::printf("gradient jump across C0 shadow edges (steps/px): reference %.3f (its noise floor %.3f), C1 quadratic "
-              "%.3f, relaxed Clough-Tocher %.3f\n", real, noise, quadratic, cloughTocher);
+  std::printf(
+      "gradient jump across C0 shadow edges (steps/px): reference %.3f (its noise floor %.3f), C1 quadratic "
+      "%.3f, relaxed Clough-Tocher %.3f\n",
+      real, noise, quadratic, cloughTocher);
   EXPECT_GT(real, noise + 0.2);  // the reference has a kink there beyond its noise
   EXPECT_GT(cloughTocher, 3.0 * quadratic);
   EXPECT_LT(std::abs(cloughTocher - (real - noise)), std::abs(quadratic - (real - noise)));
@@ -98,8 +102,10 @@ TEST_F(Fig914Test, C1QuadraticOvershootsNearTheDiscontinuities) {
   const double linear = overshoot(render(mesh, Method::Gouraud), elementAt, mesh);
   const double quadratic = overshoot(render(unrelaxed, Method::C1Quadratic), elementAt, mesh);
   const double cloughTocher = overshoot(render(mesh, Method::CloughTocher), elementAt, mesh);
-  std::printf("largest rise above an element's own nodes (fraction of the brightest node): linear %.4f, C1 quadratic "
-              "%.4f, relaxed Clough-Tocher %.4f\n", linear, quadratic, cloughTocher);
+  std::printf(
+      "largest rise above an element's own nodes (fraction of the brightest node): linear %.4f, C1 quadratic "
+      "%.4f, relaxed Clough-Tocher %.4f\n",
+      linear, quadratic, cloughTocher);
   // The book's claim for (b) holds: it rises above its nodes (2.6 % measured), where linear
   // never can. The book does not claim (c) avoids it, and here it does not: relaxing the C0
   // edges leaves the C1 pieces between them, which overshoot as much (2.5 % measured).

@@ -59,10 +59,11 @@ TEST(FinalGatherGlTest, CoversTheSamePixelsAsTheGlRendererAndAgreesWithAnExactSo
       ++compared;
     }
   }
-  std::printf("final gather vs GL: %zu pixels compared, mean B (red) GL %.5f, gather %.5f (%+.2f%%), "
-              "%zu coverage mismatches\n",
-              compared, glSum / double(compared), gatherSum / double(compared),
-              100.0 * (gatherSum - glSum) / glSum, coverageMismatches);
+  std::printf(
+      "final gather vs GL: %zu pixels compared, mean B (red) GL %.5f, gather %.5f (%+.2f%%), "
+      "%zu coverage mismatches\n",
+      compared, glSum / double(compared), gatherSum / double(compared), 100.0 * (gatherSum - glSum) / glSum,
+      coverageMismatches);
   EXPECT_GT(compared, size_t(width * height / 4));
   EXPECT_EQ(coverageMismatches, 0u);
   // Linear interpolation of exact nodal values on 4 cm elements is within a fraction of a

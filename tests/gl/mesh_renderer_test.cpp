@@ -1,14 +1,14 @@
 // The GL path against values computed on the CPU: what each pixel must show is known exactly
 // from the camera and the mesh, so the tests compare the linear (pre-tone-map) read-back
 // with it, per pixel.
+#include "gl/mesh_renderer.h"
 #include "core/camera.h"
 #include "core/display_transform.h"
 #include "core/error.h"
 #include "gl/egl_context.h"
-#include "gl/mesh_renderer.h"
 
-#include <glm/gtc/type_ptr.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
 #include <cstdlib>
@@ -145,9 +145,12 @@ TEST_F(MeshRendererTest, PerspectiveCorrectGouraudInterpolatesOnTheSurface) {
   renderer.render(camera, settings, width, height);
   const glm::dmat4 clipFromWorld = camera.clipFromWorld(double(width) / height);
   int checked = 0;
-  const double error = maxError(renderer.readLinear(), [&](const Vec2& w, const Vec3&) {
-    return interpolate(mesh, surfaceBarycentric(clipFromWorld, w, width, height, mesh));
-  }, checked);
+  const double error = maxError(
+      renderer.readLinear(),
+      [&](const Vec2& w, const Vec3&) {
+        return interpolate(mesh, surfaceBarycentric(clipFromWorld, w, width, height, mesh));
+      },
+      checked);
   EXPECT_GT(checked, 500);
   EXPECT_LT(error, 2e-3);
 }
@@ -159,15 +162,18 @@ TEST_F(MeshRendererTest, ScreenSpaceGouraudInterpolatesInTheImageAndDiffersFromP
   renderer.render(camera, settings, width, height);
   const LinearImage image = renderer.readLinear();
   int checked = 0;
-  const double error = maxError(image, [&](const Vec2&, const Vec3& screen) { return interpolate(mesh, screen); },
-                                checked);
+  const double error = maxError(
+      image, [&](const Vec2&, const Vec3& screen) { return interpolate(mesh, screen); }, checked);
   EXPECT_GT(checked, 500);
   EXPECT_LT(error, 2e-3);
   // The two interpolations really differ on this view (C&W §9.2, footnote 3).
   const glm::dmat4 clipFromWorld = camera.clipFromWorld(double(width) / height);
-  const double difference = maxError(image, [&](const Vec2& w, const Vec3&) {
-    return interpolate(mesh, surfaceBarycentric(clipFromWorld, w, width, height, mesh));
-  }, checked);
+  const double difference = maxError(
+      image,
+      [&](const Vec2& w, const Vec3&) {
+        return interpolate(mesh, surfaceBarycentric(clipFromWorld, w, width, height, mesh));
+      },
+      checked);
   EXPECT_GT(difference, 0.1);
 }
 
@@ -178,7 +184,9 @@ TEST_F(MeshRendererTest, FlatShadingShowsTheElementMean) {
   renderer.render(camera, settings, width, height);
   int checked = 0;
   const Rgb mean = mesh.meanB(0);
-  EXPECT_LT(maxError(renderer.readLinear(), [&](const Vec2&, const Vec3&) { return mean; }, checked), 1e-6);
+  EXPECT_LT(maxError(
+                renderer.readLinear(), [&](const Vec2&, const Vec3&) { return mean; }, checked),
+            1e-6);
   EXPECT_GT(checked, 500);
 }
 

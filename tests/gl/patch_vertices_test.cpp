@@ -11,7 +11,9 @@ namespace {
 
 // A jittered triangle mesh in a tilted plane, B a linear function of position.
 RadiosityMesh linearFieldMesh() {
-  const test::Field f = [](const Vec2& p) { return Rgb(0.2 + 0.5 * p.x + 0.1 * p.y, 0.4 - 0.2 * p.y, 0.3 + 0.3 * p.x); };
+  const test::Field f = [](const Vec2& p) {
+    return Rgb(0.2 + 0.5 * p.x + 0.1 * p.y, 0.4 - 0.2 * p.y, 0.3 + 0.3 * p.x);
+  };
   return test::gridMesh(4, false, 0.3, f, 7);
 }
 
@@ -19,8 +21,9 @@ RadiosityMesh linearFieldMesh() {
 std::vector<std::pair<std::vector<BezierVertex>, int>> c1Pieces(const RadiosityMesh& mesh) {
   const SurfaceTriangulation surface(mesh);
   const CornerGradients gradients = vertexGradients(surface, true);
-  return {{powellSabinVertices(buildPowellSabinPatches(surface, gradients)), 2},
-          {cloughTocherVertices(buildCloughTocherPatches(surface, gradients, CloughTocherVariant::AffineInvariant)), 3}};
+  return {
+      {powellSabinVertices(buildPowellSabinPatches(surface, gradients)), 2},
+      {cloughTocherVertices(buildCloughTocherPatches(surface, gradients, CloughTocherVariant::AffineInvariant)), 3}};
 }
 
 // The radiosity surface lifts each piece along its corners' right-hand normal: every piece must

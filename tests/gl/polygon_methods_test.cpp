@@ -88,7 +88,8 @@ TEST(PolygonMethods, ScanlineGouraudPerPixelIsTheCpuReferenceInTheSameView) {
   EXPECT_GT(c.pixels, 1000u);
   EXPECT_EQ(c.withinTolerance, c.pixels);
   // And it is not Gouraud: the view-independent interpolation differs by far more.
-  const test::PixelComparison gouraud = obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
+  const test::PixelComparison gouraud =
+      obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
   EXPECT_GT(gouraud.maxError, 0.01);
 }
 
@@ -105,14 +106,13 @@ TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
   // Two quadratic triangles: corners and mid-edge nodes with unrelated values.
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
-  const Vec3 p[] = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0},
-                    {0, -0.5, 0},    {0.5, 0, 0},    {0, 0, 0},     {0, 0.5, 0},  {-0.5, 0, 0}};
+  const Vec3 p[] = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0}, {0, -0.5, 0},
+                    {0.5, 0, 0},     {0, 0, 0},      {0, 0.5, 0},   {-0.5, 0, 0}};
   const double B[] = {0.2, 0.9, 0.4, 0.6, 0.1, 0.8, 0.95, 0.3, 0.5};
   for (int i = 0; i < 9; ++i) mesh.nodes.push_back({p[i], Rgb(B[i], 1 - B[i], 0.5), {}});
   mesh.elements.push_back(Element{{0, 1, 2}, {4, 5, 6}, 0, 0});
   mesh.elements.push_back(Element{{0, 2, 3}, {6, 7, 8}, 0, 0});
-  const test::PixelComparison c =
-      obliqueComparison(Method::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
+  const test::PixelComparison c = obliqueComparison(Method::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
   EXPECT_GT(c.pixels, 1000u);
   EXPECT_EQ(c.withinTolerance, c.pixels);
 }
@@ -135,8 +135,7 @@ TEST(PolygonMethods, SerendipityQuadsPerPixelAreTheCpuReference) {
   mesh.elements.push_back(Element{{0, 1, 2, 3}, {m01, m12, m23, m30}, 0, 0});
   mesh.elements.push_back(Element{{3, 2, 4}, {m23, m24, m43}, 0, 0});
   ASSERT_TRUE(isSerendipityQuad(mesh, 0));
-  const test::PixelComparison c =
-      obliqueComparison(Method::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
+  const test::PixelComparison c = obliqueComparison(Method::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
   EXPECT_GT(c.pixels, 1000u);
   EXPECT_EQ(c.withinTolerance, c.pixels);
 }
@@ -219,8 +218,8 @@ TEST(DisplayViews, ValueViewDrawsItsColourBar) {
   const Image image = renderer.readDisplay();
   const uint8_t* top = &image.rgba[(0 * 64 + 62) * 4];
   const uint8_t* bottom = &image.rgba[(63 * 64 + 62) * 4];
-  EXPECT_GT(top[0] + top[1] + top[2], 3 * 230);   // white at 1
-  EXPECT_LT(bottom[0] + bottom[1], 2 * 40);        // dark blue at 0
+  EXPECT_GT(top[0] + top[1] + top[2], 3 * 230);  // white at 1
+  EXPECT_LT(bottom[0] + bottom[1], 2 * 40);      // dark blue at 0
   EXPECT_GT(bottom[2], bottom[0]);
 }
 

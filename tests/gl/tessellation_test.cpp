@@ -83,8 +83,8 @@ void expectWithinTolerance(const Renders& r, double exposure, double tolerance, 
       ++pixels;
     }
   std::cout << what << ": " << pixels << " pixels, worst display error " << worst * 255 << " / tolerance "
-            << tolerance * 255 << " 8-bit steps; mean level " << r.statistics.averageLevel << ", "
-            << r.statistics.draws << " draws\n";
+            << tolerance * 255 << " 8-bit steps; mean level " << r.statistics.averageLevel << ", " << r.statistics.draws
+            << " draws\n";
   EXPECT_GT(pixels, 2000u) << what;
   EXPECT_LE(worst, 1.01 * tolerance) << what;
 }
@@ -133,11 +133,11 @@ TEST(Tessellation, AdaptiveMeetsItsToleranceOnEveryBundledScene) {
     for (Method method : {Method::CloughTocher, Method::C1Quadratic})
       for (double exposure : {0.0, 1.5})
         for (double steps : {0.5, 2.0}) {
-          const std::string what = scene.name + ", " + methodName(method) + ", exposure " +
-                                   std::to_string(exposure) + ", tolerance " + std::to_string(steps);
+          const std::string what = scene.name + ", " + methodName(method) + ", exposure " + std::to_string(exposure) +
+                                   ", tolerance " + std::to_string(steps);
           expectWithinTolerance(
-              renderBoth(scene.mesh, scene.camera, method, kAdaptiveTessellation, exposure, steps / 255),
-              exposure, steps / 255, what);
+              renderBoth(scene.mesh, scene.camera, method, kAdaptiveTessellation, exposure, steps / 255), exposure,
+              steps / 255, what);
         }
 }
 
@@ -166,8 +166,8 @@ TEST(Tessellation, NoLevelOrViewOpensCracks) {
     for (Method method : {Method::CloughTocher, Method::C1Quadratic})
       for (int level : {1, 64, kAdaptiveTessellation})
         for (const Camera& camera : {oblique(), grazing}) {
-          const std::string what = std::string(name) + " " + methodName(method) + " level " +
-                                   std::to_string(level) + (&camera == &grazing ? " grazing" : "");
+          const std::string what = std::string(name) + " " + methodName(method) + " level " + std::to_string(level) +
+                                   (&camera == &grazing ? " grazing" : "");
           expectNoCracks(renderBoth(mesh, camera, method, level, 0.0, 0.25 / 255), what);
         }
   }

@@ -125,12 +125,12 @@ TEST(C1Mesh, C1MethodsAreC1AcrossEveryUntaggedInteriorEdge) {
           const EdgeChecker checker(mesh, m);
           for (const InteriorEdge& edge : interiorEdges(mesh)) {
             const Jump jump = checker.across(edge);
-            ASSERT_LE(jump.gradient, kGradientBound) << "seed " << seed << ", " << name << ", " << m.name
-                                                     << (stored ? ", exact" : ", estimated") << " gradients, "
-                                                     << jump.where(mesh);
-            ASSERT_LE(jump.value, kValueBound) << "seed " << seed << ", " << name << ", " << m.name
-                                               << (stored ? ", exact" : ", estimated") << " gradients, "
-                                               << jump.where(mesh);
+            ASSERT_LE(jump.gradient, kGradientBound)
+                << "seed " << seed << ", " << name << ", " << m.name << (stored ? ", exact" : ", estimated")
+                << " gradients, " << jump.where(mesh);
+            ASSERT_LE(jump.value, kValueBound)
+                << "seed " << seed << ", " << name << ", " << m.name << (stored ? ", exact" : ", estimated")
+                << " gradients, " << jump.where(mesh);
             worst.gradient = std::max(worst.gradient, jump.gradient);
             worst.value = std::max(worst.value, jump.value);
             relative[name] = std::max(relative[name], jump.relative);
@@ -140,7 +140,8 @@ TEST(C1Mesh, C1MethodsAreC1AcrossEveryUntaggedInteriorEdge) {
   std::printf("[ figures  ] C1 across untagged edges: gradient jump <= %.3g eps B A / h, value jump <= %.3g eps B A\n",
               worst.gradient, worst.value);
   for (const auto& [name, r] : relative)
-    std::printf("[ figures  ] C1 across untagged edges, %-20s gradient jump / largest gradient <= %.2g\n", name.c_str(), r);
+    std::printf("[ figures  ] C1 across untagged edges, %-20s gradient jump / largest gradient <= %.2g\n", name.c_str(),
+                r);
 }
 
 TEST(C1Mesh, LinearBilinearAndQuadraticAreOnlyC0) {
@@ -155,8 +156,8 @@ TEST(C1Mesh, LinearBilinearAndQuadraticAreOnlyC0) {
         double largest = 0.0;
         for (const InteriorEdge& edge : interiorEdges(mesh)) {
           const Jump jump = checker.across(edge);
-          ASSERT_LE(jump.value, kValueBound) << "seed " << seed << ", " << name << ", " << m.name << ", "
-                                             << jump.where(mesh);
+          ASSERT_LE(jump.value, kValueBound)
+              << "seed " << seed << ", " << name << ", " << m.name << ", " << jump.where(mesh);
           largest = std::max(largest, jump.gradient);
         }
         EXPECT_GT(largest, 1e6 * kGradientBound) << "seed " << seed << ", " << name << ", " << m.name << " is C1?";
@@ -256,8 +257,11 @@ struct CutMesh {
 std::vector<CutMesh> cutMeshes(uint32_t seed) {
   std::vector<CutMesh> out;
   for (int kind = 0; kind < 3; ++kind) {
-    CutMesh cut{kind == 0 ? "triangles" : kind == 1 ? "quads" : "quadratic triangles",
-                gridMesh(8, kind == 1, 0.3, smooth, seed, plane), {}};
+    CutMesh cut{kind == 0   ? "triangles"
+                : kind == 1 ? "quads"
+                            : "quadratic triangles",
+                gridMesh(8, kind == 1, 0.3, smooth, seed, plane),
+                {}};
     straightenGridLines(cut.mesh, 8, 4, -1, plane);
     if (kind == 2) cut.mesh = withMidEdgeNodes(cut.mesh, smooth, plane);
     cut.twin = cutAlongLine(cut.mesh, 0.5, plane);

@@ -53,15 +53,23 @@ const std::vector<RadiosityMesh>& linearMeshes() {
 }
 
 double maxError(const RadiosityMesh& mesh, const MethodCase& m) {
-  static const Vec3 weights[] = {{1.0 / 3, 1.0 / 3, 1.0 / 3}, {0.5, 0.5, 0.0}, {0.0, 0.5, 0.5}, {0.5, 0.0, 0.5},
-                                 {0.6, 0.2, 0.2},           {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}, {0.1, 0.45, 0.45},
-                                 {0.45, 0.1, 0.45},         {0.45, 0.45, 0.1}};
+  static const Vec3 weights[] = {{1.0 / 3, 1.0 / 3, 1.0 / 3},
+                                 {0.5, 0.5, 0.0},
+                                 {0.0, 0.5, 0.5},
+                                 {0.5, 0.0, 0.5},
+                                 {0.6, 0.2, 0.2},
+                                 {0.2, 0.6, 0.2},
+                                 {0.2, 0.2, 0.6},
+                                 {0.1, 0.45, 0.45},
+                                 {0.45, 0.1, 0.45},
+                                 {0.45, 0.45, 0.1}};
   const auto interpolant = makeInterpolant(mesh, m.method, m.options);
   double worst = 0.0;
   for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
     const auto& c = mesh.elements[e].corners;
     for (const Vec3& w : weights) {
-      const Vec3 x = w.x * mesh.nodes[c[0]].position + w.y * mesh.nodes[c[1]].position + w.z * mesh.nodes[c[2]].position;
+      const Vec3 x =
+          w.x * mesh.nodes[c[0]].position + w.y * mesh.nodes[c[1]].position + w.z * mesh.nodes[c[2]].position;
       const Rgb d = interpolant->evaluate(e, x).B - smooth(plane.coords(x));
       worst = std::max({worst, std::abs(d.x), std::abs(d.y), std::abs(d.z)});
     }
@@ -113,7 +121,8 @@ TEST(Convergence, LinearIsSecondOrder) {
 }
 
 TEST(Convergence, C1MethodsAreThirdOrderWithExactGradients) {
-  for (const MethodCase& m : c1Methods(true)) expectOrder(m.name + ", exact gradients", study(m, true, false), 2.7, 3.3);
+  for (const MethodCase& m : c1Methods(true))
+    expectOrder(m.name + ", exact gradients", study(m, true, false), 2.7, 3.3);
 }
 
 TEST(Convergence, C1MethodsAreSecondOrderWithLeastSquaresGradients) {

@@ -58,7 +58,8 @@ TEST(ElementMethods, DimNodesKeepTheirOwnValueNextToBrightOnes) {
   // value to its own relative precision, not to the precision of the brightest neighbour.
   RadiosityMesh mesh = gridMesh(3, false, 0.3, quadraticField, 11);
   for (size_t i = 0; i < mesh.nodes.size(); ++i) mesh.nodes[i].B = Rgb(i % 2 ? 1e8 : 1e-8, 1.0, i % 3 ? 1e-8 : 1e8);
-  for (Method method : {Method::Gouraud, Method::Bilinear, Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
+  for (Method method :
+       {Method::Gouraud, Method::Bilinear, Method::Quadratic, Method::C1Quadratic, Method::CloughTocher}) {
     const auto interpolant = makeInterpolant(mesh, method);
     for (uint32_t e = 0; e < mesh.elements.size(); ++e)
       for (uint32_t n : mesh.elements[e].corners) {

@@ -50,7 +50,8 @@ RadiosityMesh capMesh(double aspect, const Field& f) {
   mesh.materials.push_back(Material{"grey", Rgb(0.5), Rgb(0.0)});
   for (const Vec2& p : {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1), Vec2(0.5, 1.0 / aspect), Vec2(0.5, -0.5)})
     mesh.nodes.push_back({plane.at(p.x, p.y), f(p), {}});
-  for (const std::array<uint32_t, 3>& t : {std::array<uint32_t, 3>{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 5, 1}})
+  for (const std::array<uint32_t, 3>& t :
+       {std::array<uint32_t, 3>{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 5, 1}})
     mesh.elements.push_back(Element{{t[0], t[1], t[2]}, {}, 0, 0});
   return mesh;
 }
@@ -105,8 +106,8 @@ LinearErrors linearErrors(const RadiosityMesh& mesh, const MethodCase& m) {
       out.finite &= finite(s);
       out.value = std::max(out.value, glm::length(s.B - linear(plane.coords(x))) / (eps * aspect * B));
       for (int c = 0; c < 3; ++c)
-        out.gradient = std::max(out.gradient, glm::length(s.gradient[c] - worldGradient(kLinearSlope[c], plane)) /
-                                                  (eps * aspect * B));
+        out.gradient = std::max(
+            out.gradient, glm::length(s.gradient[c] - worldGradient(kLinearSlope[c], plane)) / (eps * aspect * B));
     }
   }
   return out;
@@ -159,7 +160,8 @@ TEST(Extremes, CapsUpToAspect1e7AreC1AcrossTheirEdges) {
   // (measured <= 1).
   const Field f = [](const Vec2& p) { return Rgb(2 + std::sin(3 * p.x) * p.y, std::exp(p.x), 1 + p.x * p.y); };
   const GradientField g = [](const Vec2& p) {
-    return std::array<Vec2, 3>{Vec2(3 * std::cos(3 * p.x) * p.y, std::sin(3 * p.x)), Vec2(std::exp(p.x), 0), Vec2(p.y, p.x)};
+    return std::array<Vec2, 3>{Vec2(3 * std::cos(3 * p.x) * p.y, std::sin(3 * p.x)), Vec2(std::exp(p.x), 0),
+                               Vec2(p.y, p.x)};
   };
   for (double aspect : {1e3, 1e4, 1e5, 1e6, 1e7}) {
     RadiosityMesh mesh = capMesh(aspect, f);
@@ -229,8 +231,10 @@ TEST(Extremes, TheBookCloughTocherAmplifiesNoiseOnNeedlesTheAffineOneDoesNot) {
             }
           }
         }
-        std::printf("[ figures  ] needles of aspect %.0e, %-9s gradients, %-24s amplification %9.4g, out of range by %9.3g sigma\n",
-                    aspect, stored ? "exact" : "estimated", m.name.c_str(), amplification, excess);
+        std::printf(
+            "[ figures  ] needles of aspect %.0e, %-9s gradients, %-24s amplification %9.4g, out of range by %9.3g "
+            "sigma\n",
+            aspect, stored ? "exact" : "estimated", m.name.c_str(), amplification, excess);
         const std::string input = "aspect " + std::to_string(aspect) + ", " + m.name;
         if (m.options.cloughTocher == CloughTocherVariant::Book && m.method == Method::CloughTocher)
           EXPECT_GT(excess, 0.01 * aspect) << input;  // the trouble, pinned: a fix would show here
@@ -257,9 +261,10 @@ TEST(Extremes, HighDynamicRangeDataStaysFiniteAndTheC1MethodsGoNegativeByAMeasur
     std::uniform_real_distribution<double> exponent(-8.0, 8.0);
     for (Node& n : mesh.nodes) {
       const Vec2 p = plane.coords(n.position);
-      n.B = kind == 0 ? Rgb(std::pow(10.0, exponent(random)), std::pow(10.0, exponent(random)),
-                            std::pow(10.0, exponent(random)))
-                      : Rgb(std::pow(10.0, 16 * p.x - 8), std::pow(10.0, 8 - 16 * p.y), std::pow(10.0, 16 * p.x * p.y - 8));
+      n.B = kind == 0
+                ? Rgb(std::pow(10.0, exponent(random)), std::pow(10.0, exponent(random)),
+                      std::pow(10.0, exponent(random)))
+                : Rgb(std::pow(10.0, 16 * p.x - 8), std::pow(10.0, 8 - 16 * p.y), std::pow(10.0, 16 * p.x * p.y - 8));
     }
     // The largest nodal value per channel around each element.
     const MeshTopology topology(mesh);
@@ -302,15 +307,17 @@ TEST(Extremes, HighDynamicRangeDataStaysFiniteAndTheC1MethodsGoNegativeByAMeasur
         }
         negative += below;
       }
-      std::printf("[ figures  ] 1e-8 .. 1e8, %-13s %-24s min B / (largest nodal B around) %8.3g, / (the element's own) "
-                  "%8.3g, negative in %3d of %zu elements; at the nodes, relative error up to %.2g\n",
-                  kind == 0 ? "random nodes," : "10^(16x - 8),", m.name.c_str(), -worst, -worstOwn, negative,
-                  mesh.elements.size(), nodeError);
+      std::printf(
+          "[ figures  ] 1e-8 .. 1e8, %-13s %-24s min B / (largest nodal B around) %8.3g, / (the element's own) "
+          "%8.3g, negative in %3d of %zu elements; at the nodes, relative error up to %.2g\n",
+          kind == 0 ? "random nodes," : "10^(16x - 8),", m.name.c_str(), -worst, -worstOwn, negative,
+          mesh.elements.size(), nodeError);
       if (m.method == Method::Gouraud || m.method == Method::Bilinear) {
         EXPECT_EQ(negative, 0) << m.name;
       }
       // Measured: at most 0.096 of the neighbourhood's value (c1-quadratic on 10^(16x - 8)).
-      EXPECT_LE(worst, 0.12) << m.name << " went below zero by " << worst << " of the largest value around (0.096 measured)";
+      EXPECT_LE(worst, 0.12) << m.name << " went below zero by " << worst
+                             << " of the largest value around (0.096 measured)";
     }
   }
 }
@@ -326,7 +333,8 @@ TEST(Extremes, NearlyCollinearGradientStencilsStayBounded) {
     RadiosityMesh mesh;
     mesh.materials.push_back(Material{"grey", Rgb(0.5), Rgb(0.0)});
     const int n = 8;
-    for (int i = 0; i <= n; ++i) mesh.nodes.push_back({plane.at(double(i) / n, 0.0), linear(Vec2(double(i) / n, 0.0)), {}});
+    for (int i = 0; i <= n; ++i)
+      mesh.nodes.push_back({plane.at(double(i) / n, 0.0), linear(Vec2(double(i) / n, 0.0)), {}});
     for (int i = 0; i < n; ++i) {
       const Vec2 p((i + 0.5) / n, delta);
       mesh.nodes.push_back({plane.at(p.x, p.y), linear(p), {}});
@@ -367,7 +375,7 @@ TEST(Extremes, ZeroAreaTrianglesGiveNeitherNaNNorAnAbort) {
     const bool quads = kind == 3;
     RadiosityMesh mesh = gridMesh(4, quads, 0.2, linear, 41, plane);
     const uint32_t a = 6, b = 7, c = 11;  // interior nodes (1, 1), (2, 1), (1, 2)
-    if (kind == 0 || kind == 3) mesh.nodes[a].position = mesh.nodes[b].position;                       // coincident
+    if (kind == 0 || kind == 3) mesh.nodes[a].position = mesh.nodes[b].position;                      // coincident
     if (kind == 1) mesh.nodes[a].position = 0.5 * (mesh.nodes[b].position + mesh.nodes[c].position);  // collinear
     if (kind == 2) mesh.nodes[a].position = mesh.nodes[b].position = mesh.nodes[c].position;          // a point
     setValues(mesh, linear, plane);
@@ -410,7 +418,8 @@ TEST(Extremes, BilinearAndSerendipityQuadsFallBackToLinearOnNonConvexQuads) {
   mesh.elements.push_back(Element{{0, 1, 2, 3}, {}, 0, 0});
   validateMesh(mesh, "non-convex quad");
   const RadiosityMesh quadratic = withMidEdgeNodes(mesh, linear, plane);
-  for (const MethodCase& m : {MethodCase{"bilinear", Method::Bilinear, {}}, MethodCase{"quadratic", Method::Quadratic, {}}}) {
+  for (const MethodCase& m :
+       {MethodCase{"bilinear", Method::Bilinear, {}}, MethodCase{"quadratic", Method::Quadratic, {}}}) {
     const RadiosityMesh& used = m.method == Method::Quadratic ? quadratic : mesh;
     const auto interpolant = makeInterpolant(used, m.method);
     for (const Node& n : used.nodes)  // corners, and for the quadratic quad its mid-edge nodes (linear data)
@@ -418,7 +427,8 @@ TEST(Extremes, BilinearAndSerendipityQuadsFallBackToLinearOnNonConvexQuads) {
     std::mt19937 random(1);
     for (int k = 0; k < 50; ++k) {
       const Vec3 x = randomPointIn(used, 0, random);
-      EXPECT_LT(glm::length(interpolant->evaluate(0, x).B - linear(plane.coords(x))), 1e-14) << m.name << " at " << str(x);
+      EXPECT_LT(glm::length(interpolant->evaluate(0, x).B - linear(plane.coords(x))), 1e-14)
+          << m.name << " at " << str(x);
     }
   }
 }

@@ -37,8 +37,9 @@ TEST(MethodRegistry, NamesAndAliasesResolveAndUnknownNamesListTheKnownOnes) {
     methodFromName("phong");
     ADD_FAILURE() << "phong was accepted";
   } catch (const Error& e) {
-    EXPECT_STREQ(e.what(), "unknown interpolation method 'phong' (expected one of flat, gouraud, scanline-gouraud, "
-                           "bilinear, quadratic, c1-quadratic, clough-tocher)");
+    EXPECT_STREQ(e.what(),
+                 "unknown interpolation method 'phong' (expected one of flat, gouraud, scanline-gouraud, "
+                 "bilinear, quadratic, c1-quadratic, clough-tocher)");
   }
   const std::vector<std::string> independent = methodNames(true);
   EXPECT_EQ(independent.size(), methodRegistry().size() - 1);
@@ -48,15 +49,15 @@ TEST(MethodRegistry, NamesAndAliasesResolveAndUnknownNamesListTheKnownOnes) {
 TEST(MethodRegistry, EveryMethodHasACpuInterpolantAndViewDependentOnesNeedAView) {
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
-  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) mesh.nodes.push_back({p, Rgb(p.x + 2 * p.y), {}});
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)})
+    mesh.nodes.push_back({p, Rgb(p.x + 2 * p.y), {}});
   mesh.elements.push_back(Element{{0, 1, 2, 3}, {}, 0, 0});
   const Camera camera = cameraFromSpec("front", mesh.bounds(), {});
   InterpolantOptions withView;
   withView.view = ScreenView{camera.clipFromWorld(1.0), Vec2(64.0)};
   for (const MethodInfo& info : methodRegistry()) {
     if (info.method == Method::Quadratic) continue;  // needs quadratic elements
-    EXPECT_NEAR(makeInterpolant(mesh, info.method, withView)->evaluate(0, Vec3(0.5, 0.5, 0)).B.r,
-                1.5, 1e-9)
+    EXPECT_NEAR(makeInterpolant(mesh, info.method, withView)->evaluate(0, Vec3(0.5, 0.5, 0)).B.r, 1.5, 1e-9)
         << info.name << ": every method reproduces the centre of linear data on a square";
     if (info.viewDependent) EXPECT_THROW(makeInterpolant(mesh, info.method), Error) << info.name;
   }

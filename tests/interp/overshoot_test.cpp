@@ -43,7 +43,11 @@ Extremes extremes(const RadiosityMesh& mesh, const MethodCase& m, int pointsPerE
 }
 
 enum class Line { Half, One, CutCm1 };
-const char* name(Line line) { return line == Line::Half ? "untagged, 1/2 on the line" : line == Line::One ? "untagged, 1 on the line" : "tagged C-1"; }
+const char* name(Line line) {
+  return line == Line::Half  ? "untagged, 1/2 on the line"
+         : line == Line::One ? "untagged, 1 on the line"
+                             : "tagged C-1";
+}
 
 // The step mesh: triangles, quads or quadratic triangles.
 RadiosityMesh stepMesh(int kind, Line line, uint32_t seed) {

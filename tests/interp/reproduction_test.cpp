@@ -34,7 +34,8 @@ struct Quadratic {
   Rgb operator()(const Vec2& p) const {
     Rgb out;
     for (int c = 0; c < 3; ++c)
-      out[c] = a[c][0] + a[c][1] * p.x + a[c][2] * p.y + a[c][3] * p.x * p.x + a[c][4] * p.x * p.y + a[c][5] * p.y * p.y;
+      out[c] =
+          a[c][0] + a[c][1] * p.x + a[c][2] * p.y + a[c][3] * p.x * p.x + a[c][4] * p.x * p.y + a[c][5] * p.y * p.y;
     return out;
   }
   std::array<Vec2, 3> gradient(const Vec2& p) const {
@@ -82,7 +83,8 @@ TEST(MeshReproduction, EveryMethodInterpolatesTheNodalValuesAtNodes) {
   for (uint32_t seed = 1; seed <= 16; ++seed) {
     const Quadratic q = randomQuadratic(seed);
     for (TestMesh& test : randomMeshes(seed, 1e4, q)) {
-      setGradients(test.mesh, [&](const Vec2& p) { return q.gradient(p); }, plane);
+      setGradients(
+          test.mesh, [&](const Vec2& p) { return q.gradient(p); }, plane);
       for (bool stored : {true, false}) {
         test.mesh.hasGradients = stored;
         for (const MethodCase& m : methodsWith(true)) {
@@ -101,8 +103,8 @@ TEST(MeshReproduction, EveryMethodInterpolatesTheNodalValuesAtNodes) {
               const double e1 = std::max({std::abs(error.x), std::abs(error.y), std::abs(error.z)});
               worst = std::max(worst, e1 / bound);
               ASSERT_LE(e1, 64.0 * bound) << "seed " << seed << ", " << test.name << " mesh, " << m.name
-                                          << (stored ? ", stored" : ", estimated") << " gradients, node " << n
-                                          << " of " << describe(test.mesh, e);
+                                          << (stored ? ", stored" : ", estimated") << " gradients, node " << n << " of "
+                                          << describe(test.mesh, e);
             }
           }
         }
@@ -127,9 +129,8 @@ TEST(MeshReproduction, LinearDataIsReproducedByEveryMethodFromEstimatedGradients
           for (int k = 0; k < 8; ++k) {
             const Vec3 x = randomPointIn(test.mesh, e, random);
             const Rgb error = interpolant->evaluate(e, x).B - q(plane.coords(x));
-            ASSERT_LE(glm::length(error), bound)
-                << "seed " << seed << ", " << test.name << " mesh, " << m.name << ", at " << str(x) << " in "
-                << describe(test.mesh, e);
+            ASSERT_LE(glm::length(error), bound) << "seed " << seed << ", " << test.name << " mesh, " << m.name
+                                                 << ", at " << str(x) << " in " << describe(test.mesh, e);
           }
         }
       }
@@ -183,7 +184,8 @@ TEST(MeshReproduction, C1MethodsReproduceEveryQuadraticGivenItsGradients) {
   for (uint32_t seed = 1; seed <= 16; ++seed) {
     const Quadratic q = randomQuadratic(200 + seed);
     RadiosityMesh mesh = sliverMesh(4 + int(seed % 5), 1e3, 0.3, q, seed, plane);
-    setGradients(mesh, [&](const Vec2& p) { return q.gradient(p); }, plane);
+    setGradients(
+        mesh, [&](const Vec2& p) { return q.gradient(p); }, plane);
     for (const MethodCase& m : c1Methods(true)) {
       const Errors errors = reproductionErrors(mesh, m, q, seed);
       EXPECT_LE(errors.value, 1e-12) << "seed " << seed << ", " << m.name << ", worst " << errors.where;
@@ -192,8 +194,9 @@ TEST(MeshReproduction, C1MethodsReproduceEveryQuadraticGivenItsGradients) {
       worstGradient = std::max(worstGradient, errors.gradient);
     }
   }
-  std::printf("[ figures  ] quadratic reproduction, exact gradients: value %.3g relative, gradient %.3g eps aspect B / h\n",
-              worstValue, worstGradient);
+  std::printf(
+      "[ figures  ] quadratic reproduction, exact gradients: value %.3g relative, gradient %.3g eps aspect B / h\n",
+      worstValue, worstGradient);
 }
 
 TEST(MeshReproduction, OnQuadraticElementsTheEstimatedGradientsReproduceQuadraticsToo) {
@@ -215,8 +218,9 @@ TEST(MeshReproduction, OnQuadraticElementsTheEstimatedGradientsReproduceQuadrati
       worst = std::max(worst, errors.valueRoundOff);
     }
   }
-  std::printf("[ figures  ] quadratic reproduction on quadratic elements, estimated gradients: value %.3g eps aspect B\n",
-              worst);
+  std::printf(
+      "[ figures  ] quadratic reproduction on quadratic elements, estimated gradients: value %.3g eps aspect B\n",
+      worst);
 }
 
 TEST(MeshReproduction, NoMethodReproducesCubics) {

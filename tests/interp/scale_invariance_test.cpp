@@ -27,8 +27,12 @@ constexpr double eps = std::numeric_limits<double>::epsilon();
 // 1.5e-11.
 std::vector<Placement> placements() {
   const Vec3 far(1e5, -1e5, 1e5);
-  return {{"scale 1e-6", 1e-6, Vec3(0.0)}, {"scale 1e-3", 1e-3, Vec3(0.0)}, {"scale 1e3", 1e3, Vec3(0.0)},
-          {"scale 1e6", 1e6, Vec3(0.0)},   {"at 1e5", 1.0, far},            {"scale 1e-3 at 1e5", 1e-3, far}};
+  return {{"scale 1e-6", 1e-6, Vec3(0.0)},
+          {"scale 1e-3", 1e-3, Vec3(0.0)},
+          {"scale 1e3", 1e3, Vec3(0.0)},
+          {"scale 1e6", 1e6, Vec3(0.0)},
+          {"at 1e5", 1.0, far},
+          {"scale 1e-3 at 1e5", 1e-3, far}};
 }
 
 // x -> origin + s x, as Placement::place does for the box's unit coordinates minus 1/2, so the
@@ -133,13 +137,13 @@ TEST(ScaleInvariance, EveryMethodGivesTheSameBAtEveryScaleAndPlace) {
               worstGradient = std::max(worstGradient, dG);
               ASSERT_LE(dB, rho) << "element " << e << " at " << str(x) << ": " << str(got.B) << " against "
                                  << str(expected.B);
-              ASSERT_LE(dG, 4.0 * rho) << "element " << e << " at " << str(x) << ": gradient "
-                                       << str(got.gradient[c]) << " against " << str(expected.gradient[c]) << " / s";
+              ASSERT_LE(dG, 4.0 * rho) << "element " << e << " at " << str(x) << ": gradient " << str(got.gradient[c])
+                                       << " against " << str(expected.gradient[c]) << " / s";
             }
           }
         }
-        std::printf("[ figures  ] %-19s %-17s %-24s B off by %8.2g, gradient by %8.2g (rho %8.2g)\n",
-                    unit.name.c_str(), placement.name.c_str(), m.name.c_str(), worstB, worstGradient, rho);
+        std::printf("[ figures  ] %-19s %-17s %-24s B off by %8.2g, gradient by %8.2g (rho %8.2g)\n", unit.name.c_str(),
+                    placement.name.c_str(), m.name.c_str(), worstB, worstGradient, rho);
       }
     }
   }

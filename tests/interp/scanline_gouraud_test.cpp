@@ -5,8 +5,8 @@
 #include "core/error.h"
 #include "interp/interpolant.h"
 
-#include <glm/gtx/rotate_vector.hpp>
 #include <gtest/gtest.h>
+#include <glm/gtx/rotate_vector.hpp>
 
 namespace radview {
 namespace {
@@ -25,9 +25,11 @@ TEST(ScanlineGouraud, TrianglesAreOrientationInvariant) {
   const double d = (triangle[1].y - triangle[2].y) * (triangle[0].x - triangle[2].x) +
                    (triangle[2].x - triangle[1].x) * (triangle[0].y - triangle[2].y);
   const double u = ((triangle[1].y - triangle[2].y) * (p.x - triangle[2].x) +
-                    (triangle[2].x - triangle[1].x) * (p.y - triangle[2].y)) / d;
+                    (triangle[2].x - triangle[1].x) * (p.y - triangle[2].y)) /
+                   d;
   const double v = ((triangle[2].y - triangle[0].y) * (p.x - triangle[2].x) +
-                    (triangle[0].x - triangle[2].x) * (p.y - triangle[2].y)) / d;
+                    (triangle[0].x - triangle[2].x) * (p.y - triangle[2].y)) /
+                   d;
   const Rgb want(u, v, 1 - u - v);
   for (double angle = 0; angle < 360; angle += 17) {
     const auto value = scanlineGouraud(rotated(triangle, angle), values, glm::rotate(p, glm::radians(angle)));
@@ -62,7 +64,7 @@ TEST(ScanlineGouraud, TheFig98QuadChangesWithItsOrientation) {
   const auto upright = scanlineGouraud(quad, values, {0.0, 0.0});
   const auto diamond = scanlineGouraud(rotated(quad, -45.0), values, {0.0, 0.0});
   ASSERT_TRUE(upright && diamond);
-  EXPECT_NEAR(upright->B.r, 0.5, 1e-12);   // axis-aligned: the mean of the four
+  EXPECT_NEAR(upright->B.r, 0.5, 1e-12);  // axis-aligned: the mean of the four
   // Rotated 45 degrees clockwise, the scanline through the centre joins corners 0 and 2
   // (values 0.9 and 0.7): the centre shows their mean.
   EXPECT_NEAR(diamond->B.r, 0.8, 1e-12);

@@ -2,8 +2,8 @@
 // tolerance on a uniform split at the chosen level (the derivation's model; OpenGL's ring
 // pattern, for which the level carries a factor of three more, is checked on the GPU in
 // tests/gl/tessellation_test.cpp).
-#include "interp/bezier_triangle.h"
 #include "interp/tessellation_level.h"
+#include "interp/bezier_triangle.h"
 
 #include <gtest/gtest.h>
 
@@ -29,15 +29,18 @@ double displayError(const std::array<Rgb, N>& net, int L, double s) {
         // Corners of the sub-triangle in barycentric coordinates.
         std::array<Vec3, 3> c;
         auto bary = [&](int a, int b) { return Vec3(double(a) / L, double(b) / L, double(L - a - b) / L); };
-        if (!upper) c = {bary(i, j), bary(i + 1, j), bary(i, j + 1)};
-        else c = {bary(i + 1, j), bary(i + 1, j + 1), bary(i, j + 1)};
+        if (!upper)
+          c = {bary(i, j), bary(i + 1, j), bary(i, j + 1)};
+        else
+          c = {bary(i + 1, j), bary(i + 1, j + 1), bary(i, j + 1)};
         const std::array<Rgb, 3> f = {exact(c[0]), exact(c[1]), exact(c[2])};
         for (double u = 0.05; u < 1; u += 0.15)
           for (double v = 0.05; u + v < 1; v += 0.15) {
             const double w = 1 - u - v;
             const Rgb linear = u * f[0] + v * f[1] + w * f[2];
             const Rgb truth = exact(u * c[0] + v * c[1] + w * c[2]);
-            for (int ch = 0; ch < 3; ++ch) worst = std::max(worst, std::abs(srgb(s * linear[ch]) - srgb(s * truth[ch])));
+            for (int ch = 0; ch < 3; ++ch)
+              worst = std::max(worst, std::abs(srgb(s * linear[ch]) - srgb(s * truth[ch])));
           }
       }
   return worst;

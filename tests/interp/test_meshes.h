@@ -117,8 +117,8 @@ inline std::vector<MethodCase> c1Methods(bool storedGradients = true) {
 }
 // Every method but flat: linear, bilinear, quadratic and the C1 ones.
 inline std::vector<MethodCase> allMethods(bool storedGradients = true) {
-  std::vector<MethodCase> out = {{"gouraud", Method::Gouraud, {}}, {"bilinear", Method::Bilinear, {}},
-                                 {"quadratic", Method::Quadratic, {}}};
+  std::vector<MethodCase> out = {
+      {"gouraud", Method::Gouraud, {}}, {"bilinear", Method::Bilinear, {}}, {"quadratic", Method::Quadratic, {}}};
   for (const MethodCase& m : c1Methods(storedGradients)) out.push_back(m);
   return out;
 }
@@ -143,7 +143,8 @@ inline RadiosityMesh refined(const RadiosityMesh& mesh, const Field& f, const Pl
   for (const Element& e : mesh.elements) {
     const uint32_t a = e.corners[0], b = e.corners[1], c = e.corners[2];
     const uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
-    for (const std::array<uint32_t, 3>& t : {std::array<uint32_t, 3>{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}})
+    for (const std::array<uint32_t, 3>& t :
+         {std::array<uint32_t, 3>{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}})
       out.elements.push_back(Element{{t[0], t[1], t[2]}, {}, e.material, e.surface});
   }
   return out;
@@ -169,7 +170,8 @@ inline void setGradients(RadiosityMesh& mesh, const GradientField& g, const Plan
   mesh.hasGradients = true;
 }
 
-// Longest edge over the height onto it: 2/sqrt(3) for an equilateral triangle, large for needles (one short edge) and caps (one vertex near the opposite edge) alike.
+// Longest edge over the height onto it: 2/sqrt(3) for an equilateral triangle, large for needles (one short edge) and
+// caps (one vertex near the opposite edge) alike.
 inline double aspectRatio(const Vec3& a, const Vec3& b, const Vec3& c) {
   const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
   const double twiceArea = glm::length(glm::cross(b - a, c - a));
@@ -244,8 +246,8 @@ inline Vec3 randomBarycentric(std::mt19937& random) {
 }
 
 // Tags every element edge whose two ends satisfy `onLine` (in the plane's (x, y)) with `order`.
-inline void tagEdges(RadiosityMesh& mesh, const std::function<bool(const Vec2&, const Vec2&)>& onLine,
-                     Continuity order, const Plane& plane = {}) {
+inline void tagEdges(RadiosityMesh& mesh, const std::function<bool(const Vec2&, const Vec2&)>& onLine, Continuity order,
+                     const Plane& plane = {}) {
   std::set<std::pair<uint32_t, uint32_t>> done;
   for (const Element& e : mesh.elements)
     for (size_t k = 0; k < e.corners.size(); ++k) {
@@ -379,8 +381,8 @@ inline double maxAbsB(const RadiosityMesh& mesh, std::initializer_list<uint32_t>
   double out = 0.0;
   for (uint32_t e : elements)
     for (const auto* list : {&mesh.elements[e].corners, &mesh.elements[e].midEdge})
-      for (uint32_t n : *list) out = std::max({out, std::abs(mesh.nodes[n].B.x), std::abs(mesh.nodes[n].B.y),
-                                              std::abs(mesh.nodes[n].B.z)});
+      for (uint32_t n : *list)
+        out = std::max({out, std::abs(mesh.nodes[n].B.x), std::abs(mesh.nodes[n].B.y), std::abs(mesh.nodes[n].B.z)});
   return out;
 }
 

@@ -20,7 +20,7 @@ TEST(DisplayMesh, TwoQuadsSharingAnEdgeDrawItOnce) {
   RadiosityMesh mesh = withNodes({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}});
   mesh.elements = {Element{{0, 1, 4, 3}, {}, 0, 0}, Element{{1, 2, 5, 4}, {}, 0, 0}};
   const DisplayMesh display = buildDisplayMesh(mesh, MeshTopology(mesh));
-  EXPECT_EQ(display.triangles.size(), 12u);    // 2 triangles per quad
+  EXPECT_EQ(display.triangles.size(), 12u);     // 2 triangles per quad
   EXPECT_EQ(display.elementEdges.size(), 14u);  // 7 distinct edges, 2 points each
 }
 

@@ -37,14 +37,13 @@ RadiosityMesh sampleMesh() {
   mesh.materials = {{"white", Rgb(0.7), Rgb(0.0)},
                     {"light", Rgb(0.8), Rgb(12.5, 10.0, 7.5)},
                     {"unused", Rgb(0.1, 0.2, 0.3), Rgb(0.0)}};
-  const std::vector<Vec2> xy = {
-      {0, 0},      {2, 0},      {2, 1},   {1, 1},  {1, 2}, {0, 2},  // 0-5  L
-      {4, 0},      {6, 0},      {4, 2},   {5, 0},  {5, 1}, {4, 1},  // 6-11 quadratic triangle
-      {3, 0},      {3, 1},                                          // 12-13 emitter
-      {1, 1},      {2, 1},      {2, 2},                             // 14-16 across the C-1 edge
-      {9, 9},                                                       // 17 orphan
-      {0, 3},      {1, 3.5},    {2, 3},   {1, 5},                   // 18-21 dart corners
-      {0.5, 3.25}, {1.5, 3.25}, {1.5, 4}, {0.5, 4}};                // 22-25 dart mid-edges
+  const std::vector<Vec2> xy = {{0, 0},      {2, 0},      {2, 1},   {1, 1},  {1, 2}, {0, 2},  // 0-5  L
+                                {4, 0},      {6, 0},      {4, 2},   {5, 0},  {5, 1}, {4, 1},  // 6-11 quadratic triangle
+                                {3, 0},      {3, 1},                                          // 12-13 emitter
+                                {1, 1},      {2, 1},      {2, 2},               // 14-16 across the C-1 edge
+                                {9, 9},                                         // 17 orphan
+                                {0, 3},      {1, 3.5},    {2, 3},   {1, 5},     // 18-21 dart corners
+                                {0.5, 3.25}, {1.5, 3.25}, {1.5, 4}, {0.5, 4}};  // 22-25 dart mid-edges
   for (size_t i = 0; i < xy.size(); ++i) {
     Node n;
     n.position = Vec3(xy[i], 0.0) + Vec3(0.1, 0.2, 0.3);
@@ -78,8 +77,7 @@ void expectSameMesh(const RadiosityMesh& written, const RadiosityMesh& read) {
     SCOPED_TRACE("node " + std::to_string(i));
     EXPECT_EQ(read.nodes[i].position, toFloat(written.nodes[i].position));
     EXPECT_EQ(read.nodes[i].B, toFloat(written.nodes[i].B));
-    for (size_t c = 0; c < 3; ++c)
-      EXPECT_EQ(read.nodes[i].gradient[c], toFloat(written.nodes[i].gradient[c]));
+    for (size_t c = 0; c < 3; ++c) EXPECT_EQ(read.nodes[i].gradient[c], toFloat(written.nodes[i].gradient[c]));
   }
   ASSERT_EQ(read.elements.size(), written.elements.size());
   for (size_t e = 0; e < written.elements.size(); ++e) {
@@ -267,13 +265,10 @@ TEST_F(SolutionFileTest, OtherViewersSeeAPlainTriangleScene) {
   for (const tinygltf::Primitive& p : model.meshes[0].primitives) {
     EXPECT_EQ(model.accessors[size_t(p.attributes.at("POSITION"))].minValues.size(), 3u);
     EXPECT_EQ(model.accessors[size_t(p.attributes.at("POSITION"))].maxValues.size(), 3u);
-    const std::vector<Vec3> color =
-        document.readVec3(p.attributes.at("COLOR_0"), {"COLOR_0", 3, kFloat, false});
-    const std::vector<Vec3> B =
-        document.readVec3(p.attributes.at("_RADIOSITY"), {"_RADIOSITY", 3, kFloat, false});
+    const std::vector<Vec3> color = document.readVec3(p.attributes.at("COLOR_0"), {"COLOR_0", 3, kFloat, false});
+    const std::vector<Vec3> B = document.readVec3(p.attributes.at("_RADIOSITY"), {"_RADIOSITY", 3, kFloat, false});
     for (size_t v = 0; v < color.size(); ++v)
-      for (int c = 0; c < 3; ++c)
-        EXPECT_FLOAT_EQ(float(color[v][c]), float(std::clamp(B[v][c] * scale, 0.0, 1.0)));
+      for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(float(color[v][c]), float(std::clamp(B[v][c] * scale, 0.0, 1.0)));
   }
 }
 
@@ -311,18 +306,16 @@ TEST_F(SolutionFileTest, WriteRefusesBadPathsAndInvalidMeshes) {
 }
 
 TEST_F(SolutionFileTest, ExtensionAccessorOutOfRange) {
-  const std::string file = damaged(
-      "oob.gltf", [](tinygltf::Model& m) { firstPrimitiveExtension(m)["corners"] = tinygltf::Value(999); });
+  const std::string file =
+      damaged("oob.gltf", [](tinygltf::Model& m) { firstPrimitiveExtension(m)["corners"] = tinygltf::Value(999); });
   const std::string message = readError(file);
   EXPECT_NE(message.find(file), std::string::npos) << message;
-  EXPECT_NE(message.find("RADVIEW_radiosity_mesh.corners: accessor 999 does not exist"), std::string::npos)
-      << message;
+  EXPECT_NE(message.find("RADVIEW_radiosity_mesh.corners: accessor 999 does not exist"), std::string::npos) << message;
 }
 
 TEST_F(SolutionFileTest, CornerOffsetsNotMonotone) {
   // Primitive 0 holds elements 0, 1, 3, 4: offsets 0 6 9 13 16. Make the third one 5.
-  const std::string file =
-      damaged("offsets.gltf", [](tinygltf::Model& m) { setUint(m, "cornerOffsets", 2, 5); });
+  const std::string file = damaged("offsets.gltf", [](tinygltf::Model& m) { setUint(m, "cornerOffsets", 2, 5); });
   const std::string message = readError(file);
   EXPECT_NE(message.find("cornerOffsets: element 1 spans offsets 6 -> 5"), std::string::npos) << message;
 }

@@ -73,8 +73,7 @@ TEST(TopologyTest, FloorNodeOnTheBottomEdgeOfAPerpendicularWallIsNoTVertex) {
   const uint32_t f3 = b.node({0, 1, 0}), f4 = b.node({1, 1, 0}), f5 = b.node({2, 1, 0});
   b.element({f0, f1, f4, f3});
   b.element({f1, f2, f5, f4});
-  const uint32_t w0 = b.node({0, 1, 0}), w1 = b.node({0, 1, 1}), w2 = b.node({2, 1, 1}),
-                 w3 = b.node({2, 1, 0});
+  const uint32_t w0 = b.node({0, 1, 0}), w1 = b.node({0, 1, 1}), w2 = b.node({2, 1, 1}), w3 = b.node({2, 1, 0});
   b.element({w0, w3, w2, w1});
   ASSERT_GT(glm::dot(b.mesh.elementNormal(2), Vec3(0, -1, 0)), 0.99);
   const MeshTopology topology(b.mesh);
@@ -96,10 +95,8 @@ TEST(TopologyTest, BackToBackFacesAreNotOneSurface) {
 TEST(TopologyTest, DuplicatedNodesAcrossACm1EdgeAreStillNeighbours) {
   MeshBuilder b;
   // Two unit quads meeting at x = 1, each with its own nodes there.
-  const uint32_t a0 = b.node({0, 0, 0}), a1 = b.node({1, 0, 0}), a2 = b.node({1, 1, 0}),
-                 a3 = b.node({0, 1, 0});
-  const uint32_t b0 = b.node({1, 0, 0}), b1 = b.node({2, 0, 0}), b2 = b.node({2, 1, 0}),
-                 b3 = b.node({1, 1, 0});
+  const uint32_t a0 = b.node({0, 0, 0}), a1 = b.node({1, 0, 0}), a2 = b.node({1, 1, 0}), a3 = b.node({0, 1, 0});
+  const uint32_t b0 = b.node({1, 0, 0}), b1 = b.node({2, 0, 0}), b2 = b.node({2, 1, 0}), b3 = b.node({1, 1, 0});
   b.element({a0, a1, a2, a3});
   b.element({b0, b1, b2, b3});
   b.mesh.discontinuities.push_back({a1, a2, Continuity::Cm1});
@@ -183,8 +180,7 @@ TEST(TopologyTest, NonManifoldEdgeHasNoNeighbour) {
 
 TEST(TopologyTest, SharedMidEdgeNodesOfQuadraticElementsAreNoTVertices) {
   MeshBuilder b;
-  const uint32_t p = b.node({0, 0, 0}), q = b.node({1, 0, 0}), r = b.node({0.5, 1, 0}),
-                 s = b.node({0.5, -1, 0});
+  const uint32_t p = b.node({0, 0, 0}), q = b.node({1, 0, 0}), r = b.node({0.5, 1, 0}), s = b.node({0.5, -1, 0});
   const uint32_t pq = b.node({0.5, 0, 0});
   b.element({p, q, r}, {pq, b.node({0.75, 0.5, 0}), b.node({0.25, 0.5, 0})});
   b.element({q, p, s}, {pq, b.node({0.25, -0.5, 0}), b.node({0.75, -0.5, 0})});
@@ -204,8 +200,7 @@ TEST(TopologyTest, LargeMeshIsFastAndExact) {
   auto grid = [&](double x0, int columns, int rows) {
     const uint32_t first = uint32_t(b.mesh.nodes.size());
     for (int i = 0; i <= columns; ++i)
-      for (int j = 0; j <= rows; ++j)
-        b.node(Vec3(place * glm::dvec4(x0 + double(i) / nx, double(j) / rows, 0, 1)));
+      for (int j = 0; j <= rows; ++j) b.node(Vec3(place * glm::dvec4(x0 + double(i) / nx, double(j) / rows, 0, 1)));
     auto at = [&](int i, int j) { return first + uint32_t(i * (rows + 1) + j); };
     for (int i = 0; i < columns; ++i)
       for (int j = 0; j < rows; ++j) b.element({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});

@@ -96,8 +96,7 @@ TEST(UniformMesherTest, ConcavePolygonIsTriangulatedIntoAConformingMesh) {
 
 TEST(UniformMesherTest, NodesAreNotSharedAcrossPolygons) {
   const RadiosityMesh mesh = meshUniformly(
-      sceneOf({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}}),
-      0.5);
+      sceneOf({{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}}), 0.5);
   EXPECT_EQ(mesh.nodes.size(), 2u * 9u);
   EXPECT_EQ(mesh.elements[7].surface, 1);
   const MeshTopology topology(mesh);
@@ -145,8 +144,7 @@ TEST(UniformMesherTest, TooManyElementsNamesASizeThatFits) {
     meshUniformly(square, 1e-300);  // ceil(1e303)^2 elements: the count must not overflow
     FAIL() << "no Error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("an element size of 0.708 or more fits"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("an element size of 0.708 or more fits"), std::string::npos) << e.what();
   }
 }
 

@@ -49,8 +49,7 @@ Result load(const fs::path& root, const std::string& file) {
   } catch (const Error& e) {
     // The message is "<file>: <reason>"; keep the reason.
     const std::string message = e.what();
-    r.detail =
-        message.rfind(file + ": ", 0) == 0 ? message.substr(file.size() + 2) : "(no file prefix) " + message;
+    r.detail = message.rfind(file + ": ", 0) == 0 ? message.substr(file.size() + 2) : "(no file prefix) " + message;
   }
   return r;
 }
@@ -78,11 +77,9 @@ std::string readerProblem(const std::string& file) {
         if (position == primitive.attributes.end()) continue;
         const std::string what = "mesh " + std::to_string(m) + " primitive " + std::to_string(p);
         const unsigned types = quantized ? kFloat | kByte | kUnsignedByte | kShort | kUnsignedShort : kFloat;
-        const size_t count =
-            document.readVec3(position->second, {what + " POSITION", 3, types, quantized}).size();
+        const size_t count = document.readVec3(position->second, {what + " POSITION", 3, types, quantized}).size();
         if (primitive.indices >= 0)
-          document.readUnsigned(primitive.indices, what + " indices", count,
-                                GltfDocument::Restart::Forbidden);
+          document.readUnsigned(primitive.indices, what + " indices", count, GltfDocument::Restart::Forbidden);
       }
   } catch (const Error& e) {
     const std::string message = e.what();
@@ -93,9 +90,12 @@ std::string readerProblem(const std::string& file) {
 
 const char* name(Outcome o) {
   switch (o) {
-    case Outcome::Loaded: return "loaded";
-    case Outcome::LoadedWithWarnings: return "loaded+warn";
-    case Outcome::Refused: return "refused";
+    case Outcome::Loaded:
+      return "loaded";
+    case Outcome::LoadedWithWarnings:
+      return "loaded+warn";
+    case Outcome::Refused:
+      return "refused";
   }
   return "?";
 }
@@ -109,8 +109,7 @@ TEST(GltfCorpus, EveryModelLoadsOrIsRefusedClearly) {
     const Result r = load(root, file);
     const std::string set = r.file.substr(0, r.file.find('/'));
     ++counts[set][r.outcome];
-    std::cout << "[corpus] " << name(r.outcome) << "\t" << r.file << (r.detail.empty() ? "" : "\t")
-              << r.detail << "\n";
+    std::cout << "[corpus] " << name(r.outcome) << "\t" << r.file << (r.detail.empty() ? "" : "\t") << r.detail << "\n";
     if (r.outcome != Outcome::Refused || r.detail.rfind("no triangles to show", 0) == 0) {
       const std::string problem = readerProblem(file);
       if (!problem.empty()) {
@@ -132,15 +131,14 @@ TEST(GltfCorpus, EveryModelLoadsOrIsRefusedClearly) {
       }
     }
   }
-  std::cout
-      << "[corpus] valid: " << counts["valid"][Outcome::Loaded] + counts["valid"][Outcome::LoadedWithWarnings]
-      << " loaded (" << counts["valid"][Outcome::LoadedWithWarnings] << " with warnings), "
-      << counts["valid"][Outcome::Refused] << " refused with a reason\n"
-      << "[corpus] invalid: " << counts["invalid"][Outcome::Refused] << " refused, "
-      << counts["invalid"][Outcome::LoadedWithWarnings] << " loaded with a warning, "
-      << counts["invalid"][Outcome::Loaded] << " loaded silently\n"
-      << "[corpus] data (all accessors and primitives, in a scene or not) refused by the validated reader: "
-      << readerRefused["valid"] << " valid, " << readerRefused["invalid"] << " invalid files\n";
+  std::cout << "[corpus] valid: " << counts["valid"][Outcome::Loaded] + counts["valid"][Outcome::LoadedWithWarnings]
+            << " loaded (" << counts["valid"][Outcome::LoadedWithWarnings] << " with warnings), "
+            << counts["valid"][Outcome::Refused] << " refused with a reason\n"
+            << "[corpus] invalid: " << counts["invalid"][Outcome::Refused] << " refused, "
+            << counts["invalid"][Outcome::LoadedWithWarnings] << " loaded with a warning, "
+            << counts["invalid"][Outcome::Loaded] << " loaded silently\n"
+            << "[corpus] data (all accessors and primitives, in a scene or not) refused by the validated reader: "
+            << readerRefused["valid"] << " valid, " << readerRefused["invalid"] << " invalid files\n";
   EXPECT_GT(counts["valid"][Outcome::Loaded] + counts["valid"][Outcome::LoadedWithWarnings], 0);
 }
 

@@ -8,9 +8,9 @@
 #include "scene/gltf_document.h"
 #include "tests/test_print.h"
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <cstring>
@@ -42,8 +42,7 @@ struct GltfBuilder {
     v.byteOffset = bytes.size();
     v.byteLength = size;
     v.byteStride = stride;
-    bytes.insert(bytes.end(), static_cast<const unsigned char*>(data),
-                 static_cast<const unsigned char*>(data) + size);
+    bytes.insert(bytes.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + size);
     model.bufferViews.push_back(v);
     return int(model.bufferViews.size()) - 1;
   }
@@ -65,11 +64,9 @@ struct GltfBuilder {
     const int type = sizeof(T) == 1   ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
                      : sizeof(T) == 2 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
                                       : TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    return accessor(view(values.data(), values.size() * sizeof(T)), type, TINYGLTF_TYPE_SCALAR,
-                    values.size());
+    return accessor(view(values.data(), values.size() * sizeof(T)), type, TINYGLTF_TYPE_SCALAR, values.size());
   }
-  int mesh(int positionAccessor, int indexAccessor = -1, int mode = TINYGLTF_MODE_TRIANGLES,
-           int material = -1) {
+  int mesh(int positionAccessor, int indexAccessor = -1, int mode = TINYGLTF_MODE_TRIANGLES, int material = -1) {
     tinygltf::Primitive p;
     p.attributes["POSITION"] = positionAccessor;
     p.indices = indexAccessor;
@@ -238,8 +235,7 @@ TEST_F(GltfImportTest, StripAndFanKeepEveryTriangleFacingFront) {
   GltfBuilder b;
   b.node(b.mesh(b.positions({0, 1, 0, 0, 0, 0, 1, 1, 0, 1, 0, 0, 2, 1, 0, 2, 0, 0, 3, 1, 0, 3, 0, 0}), -1,
                 TINYGLTF_MODE_TRIANGLE_STRIP));
-  b.node(b.mesh(b.positions({0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, -1, 1, 1, -1, 0, 1}), -1,
-                TINYGLTF_MODE_TRIANGLE_FAN));
+  b.node(b.mesh(b.positions({0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1, -1, 1, 1, -1, 0, 1}), -1, TINYGLTF_MODE_TRIANGLE_FAN));
   const Scene scene = import(b);
   ASSERT_EQ(scene.polygons.size(), 10u);
   double total = 0.0;
@@ -321,8 +317,7 @@ TEST_F(GltfImportTest, MirroringTransformKeepsNormalsPointingOut) {
 
 TEST_F(GltfImportTest, PointsLinesAndDegenerateTrianglesAreSkippedWithWarnings) {
   GltfBuilder b = GltfBuilder::triangle();
-  const int pos =
-      b.positions({0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 5, 5, 5});  // collinear, then repeated
+  const int pos = b.positions({0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 5, 5, 5});  // collinear, then repeated
   b.node(b.mesh(pos, -1, TINYGLTF_MODE_POINTS));
   b.node(b.mesh(pos, -1, TINYGLTF_MODE_LINE));
   b.node(b.mesh(pos));
@@ -356,8 +351,8 @@ TEST_F(GltfImportTest, SparseAccessorOverridesBaseValues) {
 TEST_F(GltfImportTest, QuantizedPositionsAreDecodedPerSpec) {
   GltfBuilder b;
   const std::vector<int16_t> xyz{0, 0, 0, 32767, 0, 0, 0, -32768, 0};  // normalized: -32768 -> -1
-  b.node(b.mesh(b.accessor(b.view(xyz.data(), xyz.size() * 2, 8), TINYGLTF_COMPONENT_TYPE_SHORT,
-                           TINYGLTF_TYPE_VEC3, 3)));
+  b.node(
+      b.mesh(b.accessor(b.view(xyz.data(), xyz.size() * 2, 8), TINYGLTF_COMPONENT_TYPE_SHORT, TINYGLTF_TYPE_VEC3, 3)));
   b.model.accessors[0].normalized = true;
   b.model.extensionsUsed = {"KHR_mesh_quantization"};
   b.model.extensionsRequired = {"KHR_mesh_quantization"};
@@ -431,8 +426,7 @@ TEST_F(GltfImportTest, IndexPastVertexCount) {
   GltfBuilder b;
   const int positions = b.positions({0, 0, 0, 1, 0, 0, 0, 1, 0});
   b.node(b.mesh(positions, b.indices(std::vector<uint16_t>{0, 1, 3})));
-  EXPECT_ERROR_NAMES(errorOf(b), "bad.gltf",
-                     "mesh 0 primitive 0 indices: accessor 1: element 2 is 3, out of range");
+  EXPECT_ERROR_NAMES(errorOf(b), "bad.gltf", "mesh 0 primitive 0 indices: accessor 1: element 2 is 3, out of range");
 }
 
 TEST_F(GltfImportTest, PrimitiveRestartIndexIsRefused) {
@@ -469,11 +463,10 @@ TEST_F(GltfImportTest, AccessorPastEndOfBufferView) {
 // anything is read or allocated.
 TEST_F(GltfImportTest, HugeCountsAndOffsetsDoNotWrapAround) {
   const std::string asset = R"({"version": "2.0"})";
-  EXPECT_ERROR_NAMES(errorOf(rawTriangle("count.gltf", asset, R"("count": 1537228672809129302)")),
-                     "count.gltf", "accessor 0: count 1537228672809129302, more than radview's limit of 67108864");
-  EXPECT_ERROR_NAMES(
-      errorOf(rawTriangle("offset.gltf", asset, R"("count": 3, "byteOffset": 18446744073709551612)")),
-      "offset.gltf", "run past the end of bufferView 0");
+  EXPECT_ERROR_NAMES(errorOf(rawTriangle("count.gltf", asset, R"("count": 1537228672809129302)")), "count.gltf",
+                     "accessor 0: count 1537228672809129302, more than radview's limit of 67108864");
+  EXPECT_ERROR_NAMES(errorOf(rawTriangle("offset.gltf", asset, R"("count": 3, "byteOffset": 18446744073709551612)")),
+                     "offset.gltf", "run past the end of bufferView 0");
 }
 
 // A hostile file: 36 bytes of data, accessors that declare billions of elements. Each is
@@ -516,10 +509,8 @@ TEST_F(GltfImportTest, StrideSmallerThanElementIsRefused) {
 TEST_F(GltfImportTest, WrongComponentTypeForPositions) {
   GltfBuilder b;
   const std::vector<uint16_t> xyz{0, 0, 0, 1, 0, 0, 0, 1, 0};
-  b.node(b.mesh(
-      b.accessor(b.view(xyz.data(), 18), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC3, 3)));
-  EXPECT_ERROR_NAMES(errorOf(b), "bad.gltf",
-                     "component type UNSIGNED_SHORT is not allowed here (allowed: FLOAT)");
+  b.node(b.mesh(b.accessor(b.view(xyz.data(), 18), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_VEC3, 3)));
+  EXPECT_ERROR_NAMES(errorOf(b), "bad.gltf", "component type UNSIGNED_SHORT is not allowed here (allowed: FLOAT)");
 }
 
 TEST_F(GltfImportTest, NodeCycleAndSharedChildAreRefused) {
@@ -541,8 +532,8 @@ TEST_F(GltfImportTest, AbsurdlyDeepHierarchyIsRefused) {
 
 TEST_F(GltfImportTest, UnsupportedVersionsAndRequiredExtensionsAreRefused) {
   const std::string count = R"("count": 3)";
-  EXPECT_ERROR_NAMES(errorOf(rawTriangle("min.gltf", R"({"version": "2.1", "minVersion": "2.1"})", count)),
-                     "min.gltf", "requires glTF 2.1");
+  EXPECT_ERROR_NAMES(errorOf(rawTriangle("min.gltf", R"({"version": "2.1", "minVersion": "2.1"})", count)), "min.gltf",
+                     "requires glTF 2.1");
   EXPECT_ERROR_NAMES(errorOf(rawTriangle("minmax.gltf", R"({"version": "2.0", "minVersion": "2.1"})", count)),
                      "minmax.gltf", "asset.minVersion 2.1 is greater than asset.version 2.0");
   EXPECT_ERROR_NAMES(errorOf(rawTriangle("old.gltf", R"({"version": "1.0"})", count)), "old.gltf",
@@ -564,8 +555,7 @@ TEST_F(GltfImportTest, MaterialOutOfRangeAndBadEmissiveStrength) {
   b.model.meshes[0].primitives[0].material = b.material({1, 1, 1, 1}, {1, 1, 1}, 1.0);
   b.model.materials[0].extensions["KHR_materials_emissive_strength"] =
       tinygltf::Value(tinygltf::Value::Object{{"emissiveStrength", tinygltf::Value(-2.0)}});
-  EXPECT_ERROR_NAMES(errorOf(b, "strength.gltf"), "strength.gltf",
-                     "emissiveStrength is not a finite number >= 0");
+  EXPECT_ERROR_NAMES(errorOf(b, "strength.gltf"), "strength.gltf", "emissiveStrength is not a finite number >= 0");
 }
 
 TEST_F(GltfImportTest, NothingDrawableIsAnError) {

@@ -123,8 +123,7 @@ TEST(QuadMergeTest, ShuffledGridOfSplitSquaresGivesBackTheSquares) {
   size_t found = 0;
   for (const Polygon& p : merged.polygons) {
     if (p.vertices.size() == 5) continue;
-    found += std::count_if(squares.begin(), squares.end(),
-                           [&](const auto& s) { return sameCycle(p.vertices, s); });
+    found += std::count_if(squares.begin(), squares.end(), [&](const auto& s) { return sameCycle(p.vertices, s); });
   }
   EXPECT_EQ(found, squares.size());
 }

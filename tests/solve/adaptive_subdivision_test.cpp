@@ -102,7 +102,7 @@ TEST(AdaptiveSubdivisionTest, DiscontinuityEdgesSurviveSplits) {
   refiner.split(mesh, {1}, parentOf);  // the right side, whose nodes the tag does not name
   validateMesh(mesh, "right split");
   {
-    const MeshTopology topology(mesh);  // throws if a tag is not an element edge
+    const MeshTopology topology(mesh);                    // throws if a tag is not an element edge
     EXPECT_EQ(topology.countEdges(Continuity::Cm1), 3u);  // left's whole edge, right's two halves
   }
   refiner.split(mesh, {0}, parentOf);
@@ -158,8 +158,10 @@ TEST(AdaptiveSubdivisionTest, CornellSolveLeavesTVerticesAndWritesThemBack) {
     if (element.surface != 0) continue;  // the floor
     for (uint32_t node : element.corners) {
       const Vec3& p = mesh.nodes[node].position;
-      if (underBlock(p)) shadowed += mesh.nodes[node].B.g, ++shadowedCount;
-      else if (p.x > 350 && p.z < 200) open += mesh.nodes[node].B.g, ++openCount;
+      if (underBlock(p))
+        shadowed += mesh.nodes[node].B.g, ++shadowedCount;
+      else if (p.x > 350 && p.z < 200)
+        open += mesh.nodes[node].B.g, ++openCount;
     }
   }
   ASSERT_GT(shadowedCount, 0u);

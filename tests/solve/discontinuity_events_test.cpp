@@ -205,8 +205,8 @@ TEST(DiscontinuityEventsTest, RotatedOccluderGivesUntaggedD2WedgesAtTheirCentral
 }
 
 TEST(DiscontinuityEventsTest, OccludersAboveTheEmitterOrBelowTheReceiverAreCulled) {
-  Scene scene = squaresScene(1.0, 2.0, 1.0, 3.0);                    // occluder above the light
-  scene.polygons.push_back({square(1.0, -1.0, false), 0});            // and one under the floor
+  Scene scene = squaresScene(1.0, 2.0, 1.0, 3.0);                                   // occluder above the light
+  scene.polygons.push_back({square(1.0, -1.0, false), 0});                          // and one under the floor
   scene.polygons.push_back({{{9, 9, 1}, {10, 9, 1}, {10, 10, 1}, {9, 10, 1}}, 0});  // off to the side
   DiscontinuityMeshReport report;
   const RadiosityMesh mesh = meshWithDiscontinuities(scene, 0.5, &report);

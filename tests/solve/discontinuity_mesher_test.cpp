@@ -43,7 +43,9 @@ std::vector<Quad> openBox(double x0, double x1, double y0, double y1, double z0,
 }
 
 Quad floorQuad(double half) { return {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}}; }
-Quad lightQuad(double half, double z) { return {{-half, -half, z}, {-half, half, z}, {half, half, z}, {half, -half, z}}; }
+Quad lightQuad(double half, double z) {
+  return {{-half, -half, z}, {-half, half, z}, {half, half, z}, {half, -half, z}};
+}
 
 Scene boxOnFloor() {
   Scene scene;
@@ -276,18 +278,19 @@ TEST(DiscontinuityMesherTest, ArrangementMergesOverlapsSnapsAndSplits) {
   const std::vector<Vec2> outline = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
   std::vector<EventSegment> segments = {
       {{1, 1}, {3, 1}, Continuity::C1, EventKind::EmitterVertexOccluderEdge},
-      {{2, 1}, {3.5, 1}, Continuity::C0, EventKind::OccluderVertexEmitterEdge},       // overlaps: C0 wins
-      {{1, 1 + 1e-13}, {3, 1 - 1e-13}, Continuity::C1, EventKind::Contact},           // near-duplicate
-      {{2, 0}, {2, 3}, Continuity::C1, EventKind::EmitterVertexOccluderEdge},         // crosses, from the boundary
-      {{0, 4}, {4, 0}, Continuity::C1, EventKind::EmitterVertexOccluderEdge},         // corner to corner
-      {{3, 2}, {3, 1 + 1e-12}, Continuity::Cm1, EventKind::Contact}};                 // T onto the first
+      {{2, 1}, {3.5, 1}, Continuity::C0, EventKind::OccluderVertexEmitterEdge},  // overlaps: C0 wins
+      {{1, 1 + 1e-13}, {3, 1 - 1e-13}, Continuity::C1, EventKind::Contact},      // near-duplicate
+      {{2, 0}, {2, 3}, Continuity::C1, EventKind::EmitterVertexOccluderEdge},    // crosses, from the boundary
+      {{0, 4}, {4, 0}, Continuity::C1, EventKind::EmitterVertexOccluderEdge},    // corner to corner
+      {{3, 2}, {3, 1 + 1e-12}, Continuity::Cm1, EventKind::Contact}};            // T onto the first
   const SegmentArrangement arrangement = arrangeSegments(outline, segments, 1e-7 * std::sqrt(32.0));
   const auto& points = arrangement.graph.points;
   for (size_t i = 0; i < points.size(); ++i)
-    for (size_t j = i + 1; j < points.size(); ++j) EXPECT_GT(glm::distance(points[i], points[j]), 1e-6) << i << ' ' << j;
+    for (size_t j = i + 1; j < points.size(); ++j)
+      EXPECT_GT(glm::distance(points[i], points[j]), 1e-6) << i << ' ' << j;
   EXPECT_EQ(arrangement.mergedSegments[0], 1u);
-  EXPECT_EQ(arrangement.mergedSegments[1], 1u);  // [2, 3.5] on y = 1
-  EXPECT_EQ(arrangement.mergedSegments[2], 3u);  // [1, 2] on y = 1, x = 2, the diagonal
+  EXPECT_EQ(arrangement.mergedSegments[1], 1u);      // [2, 3.5] on y = 1
+  EXPECT_EQ(arrangement.mergedSegments[2], 3u);      // [1, 2] on y = 1, x = 2, the diagonal
   EXPECT_EQ(arrangement.graph.boundary.size(), 5u);  // the square plus (2, 0)
   const ConstrainedMesh mesh = constrainedDelaunayMesh(arrangement.graph, 0.5, 100000);
   EXPECT_TRUE(mesh.refinementComplete);

@@ -57,7 +57,8 @@ double parallelRectangles(double a, double b, double c) {
   const double X = a / c, Y = b / c;
   const double X2 = X * X, Y2 = Y * Y;
   return 2.0 / (kPi * X * Y) *
-         (std::log(std::sqrt((1 + X2) * (1 + Y2) / (1 + X2 + Y2))) + X * std::sqrt(1 + Y2) * std::atan(X / std::sqrt(1 + Y2)) +
+         (std::log(std::sqrt((1 + X2) * (1 + Y2) / (1 + X2 + Y2))) +
+          X * std::sqrt(1 + Y2) * std::atan(X / std::sqrt(1 + Y2)) +
           Y * std::sqrt(1 + X2) * std::atan(Y / std::sqrt(1 + X2)) - X * std::atan(X) - Y * std::atan(Y));
 }
 
@@ -167,10 +168,9 @@ TEST(ElementToNodeTest, PointsAcrossAShadowBoundary) {
 
 TEST(ElementToNodeTest, SamplerWeightsSumToTheArea) {
   // Quads (bilinear, one piece) and concave polygons (triangles) alike.
-  const std::vector<std::vector<Vec3>> polygons = {
-      {{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.2, 1.3, 0}},
-      {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}},
-      disc(1.0, 0.0, 7, false)};
+  const std::vector<std::vector<Vec3>> polygons = {{{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.2, 1.3, 0}},
+                                                   {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}},
+                                                   disc(1.0, 0.0, 7, false)};
   for (const auto& polygon : polygons) {
     const PatchSampler sampler(polygon, 16);
     SampleStream stream(1);

@@ -77,8 +77,8 @@ double integrateTriangle(const Vec3& a, const Vec3& b, const Vec3& c, int k, con
 // clipped kernel has a kink) is split into four, down to `depth` levels: the straddling area,
 // and with it the error, halves with each level.
 template <typename F>
-double integrateAcrossHorizon(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x, const Vec3& n,
-                              int depth, const GaussLegendre& rule, F f) {
+double integrateAcrossHorizon(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& x, const Vec3& n, int depth,
+                              const GaussLegendre& rule, F f) {
   const double sa = glm::dot(a - x, n), sb = glm::dot(b - x, n), sc = glm::dot(c - x, n);
   const bool straddles = std::min({sa, sb, sc}) < 0 && std::max({sa, sb, sc}) > 0;
   if (!straddles || depth == 0) return integrateTriangle(a, b, c, 1, rule, f);
@@ -91,8 +91,8 @@ double integrateAcrossHorizon(const Vec3& a, const Vec3& b, const Vec3& c, const
 
 // Quadrature of the form factor over a polygon that is star-shaped about `centre` (a fan),
 // each fan triangle cut into k^2 pieces and refined where it crosses the horizon.
-double quadratureFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon,
-                            const Vec3& centre, int k, int order, int horizonDepth = 0) {
+double quadratureFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon, const Vec3& centre, int k,
+                            int order, int horizonDepth = 0) {
   const GaussLegendre rule = gaussLegendre(order);
   const Vec3 N = unitNormal(polygon);
   auto f = [&](const Vec3& p) { return kernel(x, n, p, N); };
@@ -104,8 +104,7 @@ double quadratureFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3
       for (int t = 0; s + t < k; ++t) {
         F += integrateAcrossHorizon(at(s, t), at(s + 1, t), at(s, t + 1), x, n, horizonDepth, rule, f);
         if (s + t + 1 < k)
-          F += integrateAcrossHorizon(at(s + 1, t), at(s + 1, t + 1), at(s, t + 1), x, n, horizonDepth, rule,
-                                      f);
+          F += integrateAcrossHorizon(at(s + 1, t), at(s + 1, t + 1), at(s, t + 1), x, n, horizonDepth, rule, f);
       }
   }
   return F;
@@ -207,8 +206,8 @@ TEST(FormFactorTest, PerpendicularRectangleFormulaHoldsAndIsMatched) {
         worstFormula = std::max(worstFormula, std::abs(formula - quadrature) / formula);
         worstOurs = std::max(worstOurs, std::abs(F - formula) / formula);
       }
-  std::printf("perpendicular rectangle: formula vs quadrature %.2e, F vs formula %.2e (max relative)\n",
-              worstFormula, worstOurs);
+  std::printf("perpendicular rectangle: formula vs quadrature %.2e, F vs formula %.2e (max relative)\n", worstFormula,
+              worstOurs);
 }
 
 TEST(FormFactorTest, RegularPolygonsApproachTheCoaxialDisc) {
@@ -219,8 +218,7 @@ TEST(FormFactorTest, RegularPolygonsApproachTheCoaxialDisc) {
   const double limit = 2 * R * R * h * h / ((h * h + R * R) * (h * h + R * R)) * kPi * kPi / 3;
   for (int N : {64, 256, 1024, 4096}) {
     std::vector<Vec3> ngon;
-    for (int i = 0; i < N; ++i)
-      ngon.push_back({R * std::cos(-2 * kPi * i / N), R * std::sin(-2 * kPi * i / N), h});
+    for (int i = 0; i < N; ++i) ngon.push_back({R * std::cos(-2 * kPi * i / N), R * std::sin(-2 * kPi * i / N), h});
     const double deficit = disc - pointToPolygonFormFactor({0, 0, 0}, {0, 0, 1}, ngon);
     EXPECT_NEAR(double(N) * N * deficit / limit, 1.0, 20.0 / (N * N) + 1e-5) << "N=" << N;
   }
@@ -268,8 +266,7 @@ TEST(FormFactorTest, SplittingAPolygonAddsUp) {
   for (int trial = 0; trial < 200; ++trial) {
     const Vec3 centre(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
     const std::vector<Vec3> polygon = random.polygon(centre, true);
-    const Vec3 x =
-        centre + random.uniform(0.1, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
+    const Vec3 x = centre + random.uniform(0.1, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
     const Vec3 n = random.direction();
     // Cut along the chord from vertex 0 to vertex k.
     const size_t k = polygon.size() / 2 + 1;
@@ -296,8 +293,7 @@ TEST(FormFactorTest, PatchOfPolygonsIsTheSumOfItsPolygons) {
     std::vector<std::vector<Vec3>> fan;
     for (size_t i = 0; i < polygon.size(); ++i) fan.push_back({middle, polygon[i], polygon[(i + 1) % polygon.size()]});
     const PatchFormFactor patch(fan);
-    const Vec3 x =
-        centre + random.uniform(0.05, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
+    const Vec3 x = centre + random.uniform(0.05, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
     const Vec3 n = random.direction();
     double sum = 0.0;
     bool horizonCuts = false;
@@ -366,8 +362,7 @@ TEST(FormFactorTest, IndependentOfPlacementAndStartingVertex) {
   for (int trial = 0; trial < 100; ++trial) {
     const Vec3 centre(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
     std::vector<Vec3> polygon = random.polygon(centre, false);
-    const Vec3 x =
-        centre + random.uniform(0.1, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
+    const Vec3 x = centre + random.uniform(0.1, 2) * unitNormal(polygon) + random.uniform(-1, 1) * random.direction();
     const Vec3 n = random.direction();
     const double F = pointToPolygonFormFactor(x, n, polygon);
     std::vector<Vec3> moved;

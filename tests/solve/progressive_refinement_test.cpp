@@ -19,8 +19,8 @@ namespace radview {
 namespace {
 
 using test::closedCornellBox;
-using test::errorOf;
 using test::cornellBox;
+using test::errorOf;
 using test::furnaceBox;
 
 // Runs shots until the solver stops; the loop is bounded by maxShots.
@@ -61,7 +61,8 @@ TEST(ProgressiveRefinementTest, AmbientTermShowsAPartialFurnaceSolutionNearItsLi
     meanWithout += without.nodes[i].B.g / with.nodes.size();
     meanWith += with.nodes[i].B.g / with.nodes.size();
   }
-  std::printf("partial furnace after 96 shots: mean B %.4f without the ambient term, %.4f with it\n", meanWithout, meanWith);
+  std::printf("partial furnace after 96 shots: mean B %.4f without the ambient term, %.4f with it\n", meanWithout,
+              meanWith);
   EXPECT_LT(meanWithout, 1.75) << "measured 1.666: a sixth of the light still unshot";
   EXPECT_NEAR(meanWith, 2.0, 0.03) << "measured 2.011";
 }
