@@ -45,7 +45,7 @@ std::vector<T> readPixels(GLuint framebuffer, GLenum colorBuffer, int width, int
 
 // A texture of a linear image (RGBA32F, nearest texel), its rows turned bottom-up as OpenGL's
 // run. Throws Error naming `source` for a size this OpenGL cannot hold.
-GLuint linearTexture(const LinearImage& image, const std::string& source) {
+GlObject linearTexture(const LinearImage& image, const std::string& source) {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
   if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
@@ -55,8 +55,7 @@ GLuint linearTexture(const LinearImage& image, const std::string& source) {
   const size_t row = size_t(image.width) * 4;
   for (int y = 0; y < image.height; ++y)
     std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &rows[size_t(y) * row]);
-  GLuint texture = 0;
-  glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+  GlObject texture(GlKind::Texture2D);
   glTextureStorage2D(texture, 1, GL_RGBA32F, image.width, image.height);
   glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -69,9 +68,9 @@ GLuint linearTexture(const LinearImage& image, const std::string& source) {
 namespace {
 
 // A vertex array reading one buffer of `stride`-byte vertices, and the buffer.
-void createVertexArray(GLuint& vao, GLuint& vbo, GLsizei stride) {
-  glCreateVertexArrays(1, &vao);
-  glCreateBuffers(1, &vbo);
+void createVertexArray(GlObject& vao, GlObject& vbo, GLsizei stride) {
+  vao = GlObject(GlKind::VertexArray);
+  vbo = GlObject(GlKind::Buffer);
   glVertexArrayVertexBuffer(vao, 0, vbo, 0, stride);
 }
 
@@ -83,7 +82,7 @@ void floatAttribute(GLuint vao, GLuint index, GLint components, size_t offset) {
 }
 
 // A vertex array of DisplayVertex triangles, and its buffer.
-void createDisplayVertexArray(GLuint& vao, GLuint& vbo) {
+void createDisplayVertexArray(GlObject& vao, GlObject& vbo) {
   createVertexArray(vao, vbo, sizeof(DisplayVertex));
   floatAttribute(vao, 0, 3, offsetof(DisplayVertex, position));
   floatAttribute(vao, 1, 3, offsetof(DisplayVertex, B));
@@ -109,22 +108,13 @@ MeshRenderer::MeshRenderer() {
   floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
   floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, color));
 
-  glCreateBuffers(1, &polygonCorners_);
-  glCreateBuffers(1, &polygonOffsets_);
-  glCreateVertexArrays(1, &emptyVao_);
-  glCreateQueries(GL_TIME_ELAPSED, 2, timerQueries_.data());
+  polygonCorners_ = GlObject(GlKind::Buffer);
+  polygonOffsets_ = GlObject(GlKind::Buffer);
+  emptyVao_ = GlObject(GlKind::VertexArray);
+  for (GlObject& query : timerQueries_) query = GlObject(GlKind::TimerQuery);
 }
 
-MeshRenderer::~MeshRenderer() {
-  GLuint arrays[] = {meshVao_, edgeVao_, emptyVao_, overlayVao_, splitVao_, netVao_, serendipityVao_};
-  glDeleteVertexArrays(7, arrays);
-  GLuint buffers[] = {meshVbo_,    edgeVbo_,  polygonCorners_, polygonOffsets_,
-                      overlayVbo_, splitVbo_, netVbo_,         serendipityVbo_};
-  glDeleteBuffers(8, buffers);
-  glDeleteQueries(2, timerQueries_.data());
-  if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
-  clearShownImage();
-}
+MeshRenderer::~MeshRenderer() = default;
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
   adoptMesh(prepareMesh(std::make_shared<const RadiosityMesh>(mesh), false));
@@ -262,7 +252,8 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
   } else if (method == Method::ScanlineGouraud || method == Method::Bilinear) {
-    drawPolygons(method == Method::ScanlineGouraud ? 0 : 1, meshVao_, triangleVertices_, clipFromWorld, width, height);
+    drawPolygons(method == Method::ScanlineGouraud ? PolygonMode::Scanline : PolygonMode::Bilinear, meshVao_,
+                 triangleVertices_, clipFromWorld, width, height);
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
     // The comparison shares the method's pieces when it is the same method per pixel.
     const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
@@ -279,7 +270,7 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     pass.draw(clipFromWorld, evaluation);
     statistics_ = pass.statistics();
     if (serendipityPass && serendipityVertices_ > 0)
-      drawPolygons(2, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
+      drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
@@ -307,10 +298,10 @@ void MeshRenderer::uploadPolygons() {
   polygonsUploaded_ = true;
 }
 
-void MeshRenderer::drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
-                                int height) {
+void MeshRenderer::drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld,
+                                int width, int height) {
   if (!polygonsUploaded_) uploadPolygons();
-  const ShaderProgram& program = polygonPrograms_[mode];
+  const ShaderProgram& program = polygonPrograms_[int(mode)];
   program.set("clipFromWorld", clipFromWorld);
   program.set("viewportSize", glm::vec2(width, height));
   program.use();
@@ -330,11 +321,10 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     settings.method = Method::Flat;
     settings.surfaceHeight = 0.0;
   }
-  const bool compareMethod =
-      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Method;
-  const bool compareImage =
-      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Image;
-  if (compareImage && !hasReferenceImage())
+  const FrameComparison comparison{
+      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Method,
+      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Image};
+  if (comparison.image && !hasReferenceImage())
     throw Error("difference view: no reference image to compare with (give one with --reference)");
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
@@ -347,6 +337,29 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   while (glGetError() != GL_NO_ERROR) continue;
   targets_.resize(width, height);
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
+  const bool drawNet = uploadForFrame(settings, viewCamera, comparison.method);
+  beginTimer();
+  // What the shaders call world is the mesh's frame (prepareMesh): world minus origin_. The
+  // product is formed in double, so only coordinates of the scene's own size reach float.
+  const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
+                                glm::translate(glm::dmat4(1.0), origin_));
+  drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison.method);
+  drawDisplayPass(settings, comparison);
+  drawOverlays(settings, camera, clipFromWorld, drawNet);
+  glEndQuery(GL_TIME_ELAPSED);
+  glDisable(GL_DEPTH_CLAMP);
+  glDepthRange(0.0, 1.0);
+  ++frame_;
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
+  glDisable(GL_DEPTH_TEST);
+  if (GLenum error = glGetError(); error != GL_NO_ERROR)
+    throw Error("OpenGL error " + hexCode(error) + " while rendering");
+}
+
+bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
   if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
   if (methodInfo(settings.method).bezierPieces)
     uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
@@ -370,22 +383,25 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   }
   const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces;
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
-  const bool timing = frame_ >= 2;
-  if (timing) {
-    GLuint64 ns = 0;
+  return drawNet;
+}
+
+void MeshRenderer::beginTimer() {
+  // Two queries in flight: the one begun two frames ago is read, so reading never stalls.
+  if (frame_ >= 2) {
     GLint ready = 0;
     glGetQueryObjectiv(timerQueries_[frame_ % 2], GL_QUERY_RESULT_AVAILABLE, &ready);
     if (ready) {
+      GLuint64 ns = 0;
       glGetQueryObjectui64v(timerQueries_[frame_ % 2], GL_QUERY_RESULT, &ns);
       gpuFrameMs_ = ns * 1e-6;
     }
   }
   glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
-  // What the shaders call world is the mesh's frame (prepareMesh): world minus origin_. The
-  // product is formed in double, so only coordinates of the scene's own size reach float.
-  const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
-                                glm::translate(glm::dmat4(1.0), origin_));
+}
 
+void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camera& camera,
+                                     const glm::mat4& clipFromWorld, int width, int height, bool compareMethod) {
   // Pass 1: linear radiosity and depth; for a difference view against another method, that
   // method first, into the comparison target.
   glViewport(0, 0, width, height);
@@ -408,7 +424,9 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   if (hasShownImage())
     glBlitNamedFramebuffer(shownFbo_, targets_.linearFramebuffer(), 0, 0, shownWidth_, shownHeight_, 0, 0, width,
                            height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
 
+void MeshRenderer::drawDisplayPass(const RenderSettings& settings, const FrameComparison& comparison) {
   // Pass 2: tone map into the display target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
   glDisable(GL_DEPTH_TEST);
@@ -423,55 +441,45 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   }
   if (settings.view == DisplayView::Difference) {
     display.set("comparisonRadiosity", 1);
-    display.set("comparisonLinear", compareMethod || reference_.linear ? 1 : 0);
+    display.set("comparisonLinear", comparison.method || reference_.linear ? 1 : 0);
     display.set("differenceScale", float(settings.differenceScale));
-    glBindTextureUnit(1, compareMethod ? targets_.comparisonTexture() : referenceTexture_);
-    comparedWithImage_ = compareImage;
+    glBindTextureUnit(1, comparison.method ? targets_.comparisonTexture() : referenceTexture_);
+    comparedWithImage_ = comparison.image;
   }
   display.use();
   glBindTextureUnit(0, targets_.linearTexture());
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
+}
 
-  // Pass 3: overlays, depth-tested against the surfaces.
-  if (settings.elementEdges && edgeVertices_ > 0) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
-    linesProgram_.set("clipFromWorld", clipFromWorld);
-    linesProgram_.set("color", settings.edgeColor);
-    linesProgram_.use();
-    glBindVertexArray(edgeVao_);
-    glDrawArrays(GL_LINES, 0, edgeVertices_);
-    glDepthMask(GL_TRUE);
-  }
+void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& color, const glm::mat4& clipFromWorld) {
+  linesProgram_.set("clipFromWorld", clipFromWorld);
+  linesProgram_.set("color", color);
+  linesProgram_.use();
+  glBindVertexArray(vao);
+  glDrawArrays(GL_LINES, 0, vertices);
+}
+
+void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
+                                bool drawNet) {
   const bool bezierMethod = methodInfo(settings.method).bezierPieces;
-  if (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet)) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+  const bool lines = (settings.elementEdges && edgeVertices_ > 0) ||
+                     (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet));
+  const bool markers =
+      (settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0);
+  if (!lines && !markers) return;
+  // Depth-tested against the surfaces, drawn over what is at their depth, not writing depth.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  if (settings.elementEdges && edgeVertices_ > 0) drawLines(edgeVao_, edgeVertices_, settings.edgeColor, clipFromWorld);
+  if (bezierMethod) {
     if (settings.tessellationTriangles)
       bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColor);
-    if (settings.splitLines && splitVertices_ > 0) {
-      linesProgram_.set("clipFromWorld", clipFromWorld);
-      linesProgram_.set("color", kSplitLineColor);
-      linesProgram_.use();
-      glBindVertexArray(splitVao_);
-      glDrawArrays(GL_LINES, 0, splitVertices_);
-    }
-    if (drawNet && netVertices_ > 0) {
-      linesProgram_.set("clipFromWorld", clipFromWorld);
-      linesProgram_.set("color", kControlNetColor);
-      linesProgram_.use();
-      glBindVertexArray(netVao_);
-      glDrawArrays(GL_LINES, 0, netVertices_);
-    }
-    glDepthMask(GL_TRUE);
+    if (settings.splitLines && splitVertices_ > 0) drawLines(splitVao_, splitVertices_, kSplitLineColor, clipFromWorld);
+    if (drawNet && netVertices_ > 0) drawLines(netVao_, netVertices_, kControlNetColor, clipFromWorld);
   }
-  if ((settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0)) {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_FALSE);
+  if (markers) {
     glEnable(GL_PROGRAM_POINT_SIZE);
     overlayProgram_.set("clipFromWorld", clipFromWorld);
     overlayProgram_.set("pointSize", 7.0f);
@@ -482,19 +490,8 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     if (settings.discontinuityEdges) glDrawArrays(GL_LINES, 0, discontinuityVertices_);
     if (settings.tVertices) glDrawArrays(GL_POINTS, discontinuityVertices_, tVertexMarkers_);
     glDisable(GL_PROGRAM_POINT_SIZE);
-    glDepthMask(GL_TRUE);
   }
-  glEndQuery(GL_TIME_ELAPSED);
-  glDisable(GL_DEPTH_CLAMP);
-  glDepthRange(0.0, 1.0);
-  ++frame_;
-  glBindVertexArray(0);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
-  glDisable(GL_DEPTH_TEST);
-  if (GLenum error = glGetError(); error != GL_NO_ERROR)
-    throw Error("OpenGL error " + hexCode(error) + " while rendering");
+  glDepthMask(GL_TRUE);
 }
 
 Image MeshRenderer::readDisplay() const {
@@ -504,26 +501,23 @@ Image MeshRenderer::readDisplay() const {
 }
 
 void MeshRenderer::setReferenceImage(const ReferenceImage& reference) {
-  const GLuint texture = linearTexture(reference.pixels, reference.path);
-  if (referenceTexture_) glDeleteTextures(1, &referenceTexture_);
-  referenceTexture_ = texture;
+  referenceTexture_ = linearTexture(reference.pixels, reference.path);
   reference_ = reference;
 }
 
 void MeshRenderer::setShownImage(const LinearImage& image) {
-  const GLuint texture = linearTexture(image, "the shown image");
+  GlObject texture = linearTexture(image, "the shown image");
   clearShownImage();
-  shownTexture_ = texture;
-  glCreateFramebuffers(1, &shownFbo_);
+  shownTexture_ = std::move(texture);
+  shownFbo_ = GlObject(GlKind::Framebuffer);
   glNamedFramebufferTexture(shownFbo_, GL_COLOR_ATTACHMENT0, shownTexture_, 0);
   shownWidth_ = image.width;
   shownHeight_ = image.height;
 }
 
 void MeshRenderer::clearShownImage() {
-  if (shownFbo_) glDeleteFramebuffers(1, &shownFbo_);
-  if (shownTexture_) glDeleteTextures(1, &shownTexture_);
-  shownFbo_ = shownTexture_ = 0;
+  shownFbo_.reset();
+  shownTexture_.reset();
   shownWidth_ = shownHeight_ = 0;
 }
 

@@ -8,6 +8,7 @@
 #include "core/image.h"
 #include "gl/bezier_pass.h"
 #include "gl/deferred_pass.h"
+#include "gl/gl_object.h"
 #include "gl/prepared_mesh.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
@@ -130,23 +131,24 @@ class MeshRenderer {
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram falseColourProgram_{{"fullscreen.vert", "false_colour.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
-  // The element-polygon methods per pixel, by drawPolygons' mode.
-  ShaderProgram polygonPrograms_[3] = {ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 0"}),
-                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 1"}),
-                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE 2"})};
+  // What polygon.frag evaluates per pixel from an element's polygon (its MODE_ macros).
+  enum class PolygonMode : int { Scanline = 0, Bilinear = 1, Serendipity = 2 };
+  ShaderProgram polygonPrograms_[3] = {ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE"}),
+                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR"}),
+                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SERENDIPITY"})};
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
-  GLuint overlayVao_ = 0, overlayVbo_ = 0;
+  GlObject overlayVao_, overlayVbo_;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
-  GLuint polygonCorners_ = 0, polygonOffsets_ = 0;          // storage buffers: element polygons
+  GlObject polygonCorners_, polygonOffsets_;                // storage buffers: element polygons
   bool polygonsUploaded_ = false;                           // only the methods that draw polygons need them
   void uploadPolygons();
   // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
-  GLuint serendipityVao_ = 0, serendipityVbo_ = 0;
+  GlObject serendipityVao_, serendipityVbo_;
   GLsizei serendipityVertices_ = 0;
-  // Element polygons per pixel from the storage buffers: mode 0 scanline Gouraud, 1 bilinear,
-  // 2 serendipity; over the DisplayVertex triangles in `vao`.
-  void drawPolygons(int mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width, int height);
-  GLuint meshVao_ = 0, meshVbo_ = 0, edgeVao_ = 0, edgeVbo_ = 0, emptyVao_ = 0;
+  // Element polygons per pixel from the storage buffers, over the DisplayVertex triangles in `vao`.
+  void drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
+                    int height);
+  GlObject meshVao_, meshVbo_, edgeVao_, edgeVbo_, emptyVao_;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
   // the method or the Clough-Tocher variant changes): for the deferred pass when `deferred`
@@ -156,6 +158,22 @@ class MeshRenderer {
   // Whether `method` is drawn by the deferred pass with this evaluation: the C1 methods per
   // pixel, on the flat surface.
   static bool isDeferred(Method method, const BezierEvaluation& evaluation);
+  // A frame's passes, in order. What can throw is uploaded first (the mesh when T-vertex repair
+  // changes, the method's and the comparison's pieces, the control net); it returns whether
+  // the control net is drawn.
+  struct FrameComparison {
+    bool method = false, image = false;  // the difference view subtracts another method / an image
+  };
+  bool uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod);
+  void beginTimer();
+  // Pass 1: linear radiosity and depth, the comparison method's first into its own target.
+  void drawRadiosityPass(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
+                         int width, int height, bool compareMethod);
+  // Pass 2: the tone map or a false-colour view into the display target.
+  void drawDisplayPass(const RenderSettings& settings, const FrameComparison& comparison);
+  // Pass 3: the overlays, depth-tested against the surfaces.
+  void drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, bool drawNet);
+  void drawLines(GLuint vao, GLsizei vertices, const glm::vec4& color, const glm::mat4& clipFromWorld);
   // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth;
   // `comparison` when it is the difference view's comparison.
   void drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
@@ -167,8 +185,8 @@ class MeshRenderer {
   DeferredPass deferred_, comparisonDeferred_;  // the C1 methods per pixel, the method's and the comparison's
   int deferredFor_ = -1, comparisonDeferredFor_ = -1;
   TessellationStatistics statistics_;  // of the last frame's method
-  GLuint referenceTexture_ = 0;
-  GLuint shownTexture_ = 0, shownFbo_ = 0;  // setShownImage's, and a framebuffer to blit it from
+  GlObject referenceTexture_;
+  GlObject shownTexture_, shownFbo_;  // setShownImage's, and a framebuffer to blit it from
   int shownWidth_ = 0, shownHeight_ = 0;
   ReferenceImage reference_;                       // as set, for readComparison
   bool comparedWithImage_ = false;                 // what the last difference view used
@@ -182,17 +200,17 @@ class MeshRenderer {
   BezierEvaluation bezierEvaluation(const RenderSettings& settings, const Camera& camera) const;
   bool repairedDrawn_ = false;
   BezierPass bezierPass_;
-  GLuint splitVao_ = 0, splitVbo_ = 0;
+  GlObject splitVao_, splitVbo_;
   GLsizei splitVertices_ = 0;
   // The radiosity surface's control net, for the pieces and height it was built for.
   void uploadControlNet(double heightScale);
-  GLuint netVao_ = 0, netVbo_ = 0;
+  GlObject netVao_, netVbo_;
   GLsizei netVertices_ = 0;
   std::array<double, 2> netFor_{-1, 0};  // patchesFor_, height scale
   int patchesFor_ = -1;                  // the method and variant the Bezier pass holds, -1 none
   int splitFor_ = -1;                    // the method and variant splitVbo_ holds
-  // Timer queries, two in flight so reading a result never stalls the frame.
-  std::array<GLuint, 2> timerQueries_{};
+  // Timer queries, two in flight so reading a result never stalls the frame (beginTimer).
+  std::array<GlObject, 2> timerQueries_;
   int frame_ = 0;
   double gpuFrameMs_ = 0.0;
 };
