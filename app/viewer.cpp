@@ -2,6 +2,7 @@
 #include "app/background_pieces.h"
 #include "app/commands.h"
 #include "app/viewer_gather.h"
+#include "app/viewer_input.h"
 #include "app/viewer_panel.h"
 #include "core/error.h"
 #include "core/image_difference.h"
@@ -29,124 +30,6 @@ namespace radview {
 namespace {
 
 std::string glfwFailure;
-
-struct Input {
-  ViewerState* state = nullptr;
-  std::string droppedPath;
-  double lastX = 0.0, lastY = 0.0;
-  bool dragging = false;
-};
-
-void onKey(GLFWwindow* window, int key, int, int action, int) {
-  if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
-  if (ImGui::GetIO().WantCaptureKeyboard) return;
-  ViewerState& s = *static_cast<Input*>(glfwGetWindowUserPointer(window))->state;
-  // GLFW's number keys are their characters' codes.
-  if (const std::optional<Method> method =
-          key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
-    s.settings.method = *method;
-    s.gather.on = false;
-    return;
-  }
-  switch (key) {
-    case GLFW_KEY_9:
-      s.gather.on = true;
-      break;
-    case GLFW_KEY_V:
-      s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book
-                                    ? CloughTocherVariant::AffineInvariant
-                                    : CloughTocherVariant::Book;
-      break;
-    case GLFW_KEY_P:
-      s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect;
-      break;
-    case GLFW_KEY_E:
-      s.settings.elementEdges = !s.settings.elementEdges;
-      break;
-    case GLFW_KEY_D:
-      s.settings.discontinuityEdges = !s.settings.discontinuityEdges;
-      break;
-    case GLFW_KEY_T:
-      s.settings.tVertices = !s.settings.tVertices;
-      break;
-    case GLFW_KEY_C:
-      s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4);
-      break;
-    case GLFW_KEY_L:
-      s.settings.splitLines = !s.settings.splitLines;
-      break;
-    case GLFW_KEY_H:
-      s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15;
-      break;
-    case GLFW_KEY_W:
-      s.settings.tessellationTriangles = !s.settings.tessellationTriangles;
-      break;
-    case GLFW_KEY_G:
-      (s.solving ? s.cancelSolveRequested : s.solveRequested) = true;
-      break;
-    case GLFW_KEY_N:
-      s.settings.controlNet = !s.settings.controlNet;
-      break;
-    case GLFW_KEY_B:
-      s.settings.repairTVertices = !s.settings.repairTVertices;
-      break;
-    case GLFW_KEY_R:
-      rotateView45(s);
-      break;
-    case GLFW_KEY_F:
-      resetCamera(s);
-      break;
-    case GLFW_KEY_S:
-      s.screenshotRequested = true;
-      break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD:
-      s.settings.exposure += 0.5;
-      break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-      s.settings.exposure -= 0.5;
-      break;
-    case GLFW_KEY_ESCAPE:
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
-      break;
-    default:
-      break;
-  }
-}
-
-void onScroll(GLFWwindow* window, double, double dy) {
-  if (ImGui::GetIO().WantCaptureMouse) return;
-  zoom(static_cast<Input*>(glfwGetWindowUserPointer(window))->state->camera, std::pow(0.9, dy));
-}
-
-void onDrop(GLFWwindow* window, int count, const char** paths) {
-  if (count > 0) static_cast<Input*>(glfwGetWindowUserPointer(window))->droppedPath = paths[0];
-}
-
-// Mouse drags: left orbits, right or middle pans.
-void handleDrag(GLFWwindow* window, Input& input) {
-  double x = 0.0, y = 0.0;
-  glfwGetCursorPos(window, &x, &y);
-  const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
-                     glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-  if (!left && !right) {
-    input.dragging = false;
-  } else if (!input.dragging) {
-    input.dragging = !ImGui::GetIO().WantCaptureMouse;
-  } else {
-    int width = 1, height = 1;
-    glfwGetWindowSize(window, &width, &height);
-    const double dx = (x - input.lastX) / height, dy = (y - input.lastY) / height;
-    if (left)
-      orbit(input.state->camera, dx * 3.0, dy * 3.0);
-    else
-      pan(input.state->camera, dx, dy);
-  }
-  input.lastX = x;
-  input.lastY = y;
-}
 
 void adoptViewedFile(ViewerState& state, ViewedFile viewed) {
   state.viewed = std::move(viewed);
@@ -198,6 +81,148 @@ struct WindowSession {
   }
 };
 
+// What the viewer's loop owns besides the window: the renderer, and the work it runs beside
+// the frames (opening files, solving, setting up C1 pieces, the final gather). Each handle*
+// does what the panel or a key asked for in this frame; a failure goes to the status line.
+struct ViewerWork {
+  gl::MeshRenderer renderer;
+  BackgroundSolve solve;
+  BackgroundOpen opener;
+  BackgroundPieces pieces;
+  ViewerGather gather;
+  uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
+
+  // A dropped file or the panel's Open, loaded and prepared in the background. All or
+  // nothing: the previous file stays on screen and in the panel unless the new one both loads
+  // and uploads.
+  void handleOpen(ViewerState& state, ViewerInput& input, double elementSize) {
+    if (!input.droppedPath.empty() || state.openRequested) {
+      const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
+      input.droppedPath.clear();
+      state.openRequested = false;
+      opener.start(path, elementSize);
+    }
+    if (opener.running()) state.status = opener.status();
+    if (std::optional<BackgroundOpen::Result> opened = opener.take()) {
+      try {
+        if (!opened->viewed) throw Error(opened->error);
+        solve.abandon();  // its partial solutions belong to the old scene
+        renderer.adoptMesh(std::move(*opened->prepared));
+        ++meshVersion;
+        adoptViewedFile(state, std::move(*opened->viewed));
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+  }
+
+  // Starting or cancelling the background solve, and showing what it has published.
+  void handleSolve(ViewerState& state) {
+    if (state.solveRequested) {
+      state.solveRequested = false;
+      solve.start(state.viewed.file.scene, SolveSettings{});
+    }
+    if (state.cancelSolveRequested) {
+      state.cancelSolveRequested = false;
+      solve.cancel();
+    }
+    if (std::optional<RadiosityMesh> solved = solve.takeSolution()) {
+      try {
+        renderer.setMesh(*solved);
+        ++meshVersion;
+        state.viewed.tVertexCount = renderer.tVertexCount();
+        state.viewed.mesh = std::move(*solved);
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+    // The status while solving, and once more in the frame it stops.
+    const bool solving = solve.running();
+    if (solving || state.solving) state.solveStatus = solve.status();
+    state.solving = solving;
+  }
+
+  void handleReference(ViewerState& state) {
+    if (!state.referenceRequested) return;
+    state.referenceRequested = false;
+    try {
+      renderer.setReferenceImage(readReferenceImage(state.referencePath));
+      state.status = "reference image " + state.referencePath;
+    } catch (const std::exception& e) {
+      state.status = e.what();
+    }
+  }
+
+  // The scene at the framebuffer's size: the gather's image or the method (Gouraud while a C1
+  // method's pieces are set up, when `piecesInBackground`), and the difference's numbers.
+  void drawScene(ViewerState& state, int width, int height, int frame, bool waitForSpp, bool piecesInBackground) {
+    try {
+      fitClipPlanes(state.camera, state.viewed.mesh.bounds());
+      gather.update(state.gather, state.viewed.mesh, meshVersion, state.camera, width, height, renderer, waitForSpp);
+      const gl::RenderSettings drawn =
+          piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
+      renderer.render(state.camera, drawn, width, height);
+      renderer.presentToDefaultFramebuffer(width, height);
+    } catch (const std::exception& e) {
+      state.status = e.what();
+    }
+    state.gpuFrameMs = renderer.gpuFrameMs();
+    state.tessellation = renderer.tessellationStatistics();
+    state.triangles = renderer.triangleCount();
+    // The difference's numbers, twice a second or so: reading both images back costs a few ms.
+    if (state.settings.view == gl::DisplayView::Difference && frame % 30 == 1) {
+      try {
+        std::ostringstream text;
+        text << displayDifference(renderer.readLinear(), renderer.readComparison(), std::exp2(state.settings.exposure));
+        state.difference = text.str();
+      } catch (const std::exception& e) {
+        state.difference = e.what();
+      }
+    }
+  }
+};
+
+void handleWriteSolution(ViewerState& state) {
+  if (!state.writeSolutionRequested) return;
+  state.writeSolutionRequested = false;
+  try {
+    writeSolution(state.viewed.mesh, state.solutionPath, state.viewed.file.scene.cameras);
+    state.status = "solution written to " + state.solutionPath;
+  } catch (const std::exception& e) {
+    state.status = e.what();
+  }
+}
+
+// The window (panel included) to `path`; false, with the reason in the status line, when it
+// cannot be written.
+bool writeScreenshot(ViewerState& state, const std::string& path, int width, int height) {
+  try {
+    writePng(gl::readDefaultFramebuffer(width, height), path);
+    state.status = "screenshot written to " + path;
+    return true;
+  } catch (const std::exception& e) {
+    state.status = e.what();
+    return false;
+  }
+}
+
+// Dear ImGui on the window, at the monitor's content scale (1 on a plain X server, 2 on a
+// typical HiDPI one); the scene is rendered at the framebuffer's own resolution.
+void startImGui(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  float xScale = 1.0f, yScale = 1.0f;
+  glfwGetWindowContentScale(window, &xScale, &yScale);
+  if (xScale > 1.0f) {
+    ImGui::GetStyle().ScaleAllSizes(xScale);
+    ImGui::GetIO().FontGlobalScale = xScale;
+  }
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+}
+
 }  // namespace
 
 int runViewer(const ViewerOptions& options) {
@@ -242,46 +267,23 @@ int runViewer(const ViewerOptions& options) {
   state.gather.emitterSamples = options.gather.emitterSamples;
   state.gather.seed = options.gather.seed;
   state.gather.targetSpp = options.gather.spp;
-  gl::MeshRenderer renderer;
-  renderer.setMesh(viewed.mesh);
-  if (!options.display.reference.empty()) renderer.setReferenceImage(readReferenceImage(options.display.reference));
+  ViewerWork work;
+  work.renderer.setMesh(viewed.mesh);
+  if (!options.display.reference.empty())
+    work.renderer.setReferenceImage(readReferenceImage(options.display.reference));
   state.referencePath = options.display.reference;
   adoptViewedFile(state, std::move(viewed));
   if (!options.display.camera.empty())
     state.camera = state.homeCamera =
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
-
-  BackgroundSolve solve;
-  BackgroundOpen opener;
-  BackgroundPieces pieces;
   // Interactive only: a run of --frames draws every frame with the method asked for.
   const bool piecesInBackground = options.frames == 0;
-  ViewerGather gather;
-  uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
   state.solveRequested = options.solve && !state.viewed.file.isSolution;
 
-  Input input;
+  ViewerInput input;
   input.state = &state;
-  glfwSetWindowUserPointer(window, &input);
-  // Installed before ImGui's, which chains to them.
-  glfwSetKeyCallback(window, onKey);
-  glfwSetScrollCallback(window, onScroll);
-  glfwSetDropCallback(window, onDrop);
-
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  ImGui::GetIO().IniFilename = nullptr;
-  ImGui::StyleColorsDark();
-  // High-DPI displays: the panel at the monitor's content scale (1 on a plain X server, 2 on a
-  // typical HiDPI one); the scene is rendered at the framebuffer's own resolution below.
-  float xScale = 1.0f, yScale = 1.0f;
-  glfwGetWindowContentScale(window, &xScale, &yScale);
-  if (xScale > 1.0f) {
-    ImGui::GetStyle().ScaleAllSizes(xScale);
-    ImGui::GetIO().FontGlobalScale = xScale;
-  }
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 450 core");
+  installInput(window, input);
+  startImGui(window);
   session.imgui = true;
 
   int status = 0;
@@ -290,95 +292,14 @@ int runViewer(const ViewerOptions& options) {
     const bool lastFrame = options.frames > 0 && frame >= options.frames;
     glfwPollEvents();
     handleDrag(window, input);
-    if (!input.droppedPath.empty() || state.openRequested) {
-      const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
-      input.droppedPath.clear();
-      state.openRequested = false;
-      opener.start(path, options.display.elementSize);
-    }
-    if (opener.running()) state.status = opener.status();
-    // All or nothing: the previous file stays on screen and in the panel unless the new one
-    // both loads and uploads.
-    if (std::optional<BackgroundOpen::Result> opened = opener.take()) {
-      try {
-        if (!opened->viewed) throw Error(opened->error);
-        solve.abandon();  // its partial solutions belong to the old scene
-        renderer.adoptMesh(std::move(*opened->prepared));
-        ++meshVersion;
-        adoptViewedFile(state, std::move(*opened->viewed));
-      } catch (const std::exception& e) {
-        state.status = e.what();
-      }
-    }
-    if (state.solveRequested) {
-      state.solveRequested = false;
-      solve.start(state.viewed.file.scene, SolveSettings{});
-    }
-    if (state.cancelSolveRequested) {
-      state.cancelSolveRequested = false;
-      solve.cancel();
-    }
-    if (std::optional<RadiosityMesh> solved = solve.takeSolution()) {
-      try {
-        renderer.setMesh(*solved);
-        ++meshVersion;
-        state.viewed.tVertexCount = renderer.tVertexCount();
-        state.viewed.mesh = std::move(*solved);
-      } catch (const std::exception& e) {
-        state.status = e.what();
-      }
-    }
-    // The status while solving, and once more in the frame it stops.
-    const bool solving = solve.running();
-    if (solving || state.solving) state.solveStatus = solve.status();
-    state.solving = solving;
-    if (state.writeSolutionRequested) {
-      state.writeSolutionRequested = false;
-      try {
-        writeSolution(state.viewed.mesh, state.solutionPath, state.viewed.file.scene.cameras);
-        state.status = "solution written to " + state.solutionPath;
-      } catch (const std::exception& e) {
-        state.status = e.what();
-      }
-    }
-    if (state.referenceRequested) {
-      state.referenceRequested = false;
-      try {
-        renderer.setReferenceImage(readReferenceImage(state.referencePath));
-        state.status = "reference image " + state.referencePath;
-      } catch (const std::exception& e) {
-        state.status = e.what();
-      }
-    }
+    work.handleOpen(state, input, options.display.elementSize);
+    work.handleSolve(state);
+    handleWriteSolution(state);
+    work.handleReference(state);
     int fbWidth = 0, fbHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
-    if (fbWidth > 0 && fbHeight > 0) {
-      try {
-        fitClipPlanes(state.camera, state.viewed.mesh.bounds());
-        gather.update(state.gather, state.viewed.mesh, meshVersion, state.camera, fbWidth, fbHeight, renderer,
-                      lastFrame && options.framesWaitForSpp);
-        const gl::RenderSettings drawn =
-            piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
-        renderer.render(state.camera, drawn, fbWidth, fbHeight);
-        renderer.presentToDefaultFramebuffer(fbWidth, fbHeight);
-      } catch (const std::exception& e) {
-        state.status = e.what();
-      }
-      state.gpuFrameMs = renderer.gpuFrameMs();
-      state.tessellation = renderer.tessellationStatistics();
-      state.triangles = renderer.triangleCount();
-      // The difference's numbers, twice a second or so: reading both images back costs a few ms.
-      if (state.settings.view == gl::DisplayView::Difference && frame % 30 == 1) {
-        try {
-          std::ostringstream text;
-          text << displayDifference(renderer.readLinear(), renderer.readComparison(),
-                                    std::exp2(state.settings.exposure));
-          state.difference = text.str();
-        } catch (const std::exception& e) {
-          state.difference = e.what();
-        }
-      }
-    }
+    if (fbWidth > 0 && fbHeight > 0)
+      work.drawScene(state, fbWidth, fbHeight, frame, lastFrame && options.framesWaitForSpp, piecesInBackground);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -386,21 +307,17 @@ int runViewer(const ViewerOptions& options) {
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
-    if (state.screenshotRequested || (lastFrame && !options.screenshot.empty())) {
-      try {
-        const std::string path = lastFrame && !options.screenshot.empty() ? options.screenshot : nextScreenshotName();
-        writePng(gl::readDefaultFramebuffer(fbWidth, fbHeight), path);
-        state.status = "screenshot written to " + path;
-        if (lastFrame) std::printf("%s\n", path.c_str());
-      } catch (const std::exception& e) {
-        state.status = e.what();
-        if (lastFrame) {
-          status = 1;
-          std::fprintf(stderr, "radview: %s\n", e.what());
-        }
+    if (lastFrame && !options.screenshot.empty()) {
+      if (writeScreenshot(state, options.screenshot, fbWidth, fbHeight)) {
+        std::printf("%s\n", options.screenshot.c_str());
+      } else {
+        status = 1;
+        std::fprintf(stderr, "radview: %s\n", state.status.c_str());
       }
-      state.screenshotRequested = false;
+    } else if (state.screenshotRequested) {
+      writeScreenshot(state, nextScreenshotName(), fbWidth, fbHeight);
     }
+    state.screenshotRequested = false;
     glfwSwapBuffers(window);
     state.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (lastFrame) break;
