@@ -150,8 +150,8 @@ int runBench(const BenchOptions& options) {
   std::vector<TradeoffRow> rows;
   // Per method and mesh: the triangles of a frame at a fixed level L over L^2, measured at the
   // first level drawn. From it a finer level's count is known before it is drawn: at 10^5
-  // elements and 1080p, level 32 made 7e8 triangles and 44 s a frame, for an image the
-  // per-pixel row already shows exactly.
+  // elements and 1080p, level 32 makes 7e8 triangles and takes 44 s a frame on llvmpipe, for
+  // an image the per-pixel row already shows exactly.
   std::map<std::pair<int, bool>, double> trianglesPerLevelSquared;
   std::vector<std::string> skipped;
   for (const BenchVariant& v : variants) {

@@ -61,8 +61,9 @@ class Bilinear : public Interpolant {
   explicit Bilinear(const RadiosityMesh& mesh)
       : mesh_(mesh), linear_(mesh, QuadDiagonal::D02), convexQuad_(mesh.elements.size()) {
     // A non-convex quad folds its bilinear map (the Jacobian changes sign inside), so the
-    // inverse is not unique and Newton's method wandered: B off by 10x the data's range at
-    // its own corners (a jittered grid, extremes_test). Such quads are interpolated linearly.
+    // inverse is not unique and Newton's method can wander off (B off by 10x the data's range
+    // at its own corners on a jittered grid, extremes_test). Such quads are interpolated
+    // linearly.
     for (size_t e = 0; e < mesh.elements.size(); ++e)
       convexQuad_[e] = mesh.elements[e].corners.size() == 4 && isConvex(mesh.cornerPositions(e));
   }
