@@ -1,5 +1,6 @@
 #include "interp/clough_tocher.h"
 
+#include "tests/interp/piece_check.h"
 #include "tests/interp/test_fields.h"
 #include "tests/test_print.h"
 
@@ -101,20 +102,12 @@ TEST(CloughTocher, EvaluatesThePieceThatHoldsThePoint) {
     const CloughTocherPatch patch = buildCloughTocher(V, f, g, boundaryEdges(V, Variant::Affine));
     for (const Vec3& lambda : samplePoints(random, 50)) {
       const Vec3 x = lambda.x * V[0] + lambda.y * V[1] + lambda.z * V[2];
-      int holding = 0;
-      for (int k = 0; k < 3; ++k) {
-        const BarycentricFrame piece = barycentricFrame({V[k], V[(k + 1) % 3], patch.C});
-        const Vec3 sigma = piece(x);
-        if (std::min({sigma.x, sigma.y, sigma.z}) < -1e-12) continue;
-        ++holding;
-        const Sample expected = sampleBezier(patch.control[k], piece, sigma), got = evaluate(patch, lambda);
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_NEAR(got.B[c], expected.B[c], 1e-12) << "piece " << k;
-          EXPECT_LE(glm::length(got.gradient[c] - expected.gradient[c]),
-                    1e-10 * (1.0 + glm::length(expected.gradient[c])));
-        }
-      }
-      EXPECT_GE(holding, 1);
+      test::expectThePieceHoldingXIsEvaluated<10>(
+          evaluate(patch, lambda), x, 3,
+          [&](int k) {
+            return std::pair(std::array<Vec3, 3>{V[k], V[(k + 1) % 3], patch.C}, patch.control[k]);
+          },
+          1e-12, 1e-10);
     }
   }
 }

@@ -1,5 +1,6 @@
 #include "interp/powell_sabin.h"
 
+#include "tests/interp/piece_check.h"
 #include "tests/interp/test_fields.h"
 #include "tests/test_print.h"
 
@@ -162,21 +163,13 @@ TEST(PowellSabin, EvaluatesThePieceThatHoldsThePoint) {
       const double a = u(random), b = u(random);
       const Vec3 lambda = a + b <= 1.0 ? Vec3(a, b, 1.0 - a - b) : Vec3(1.0 - a, 1.0 - b, a + b - 1.0);
       const Vec3 x = lambda.x * V[0] + lambda.y * V[1] + lambda.z * V[2];
-      int holding = 0;
-      for (int p = 0; p < 6; ++p) {
-        const int k = p / 2;
-        const BarycentricFrame piece = barycentricFrame({V[(k + p % 2) % 3], R[k], patch.Z});
-        const Vec3 sigma = piece(x);
-        if (std::min({sigma.x, sigma.y, sigma.z}) < -1e-12) continue;
-        ++holding;
-        const Sample expected = sampleBezier(patch.control[p], piece, sigma), got = evaluate(patch, lambda);
-        for (int c = 0; c < 3; ++c) {
-          EXPECT_NEAR(got.B[c], expected.B[c], 1e-13) << "piece " << p;
-          EXPECT_LE(glm::length(got.gradient[c] - expected.gradient[c]),
-                    1e-11 * (1.0 + glm::length(expected.gradient[c])));
-        }
-      }
-      EXPECT_GE(holding, 1);
+      test::expectThePieceHoldingXIsEvaluated<6>(
+          evaluate(patch, lambda), x, 6,
+          [&](int p) {
+            const int k = p / 2;
+            return std::pair(std::array<Vec3, 3>{V[(k + p % 2) % 3], R[k], patch.Z}, patch.control[p]);
+          },
+          1e-13, 1e-11);
     }
   }
 }
