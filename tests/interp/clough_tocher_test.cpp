@@ -61,12 +61,7 @@ TEST(CloughTocher, InterpolatesCornerValuesAndGradients) {
     const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V{plane.at({u(random), u(random)}), plane.at({u(random), u(random)}),
                                 plane.at({u(random), u(random)})};
-    std::array<Rgb, 3> f;
-    std::array<RgbGradient, 3> g;
-    for (int i = 0; i < 3; ++i) {
-      f[i] = Rgb(u(random), u(random), u(random));
-      for (Vec3& gc : g[i]) gc = plane.vector({u(random), u(random)});
-    }
+    const auto [f, g, gradientScale] = randomData(random, plane);
     std::array<CrossBoundary, 3> edges = boundaryEdges(V, trial % 2 ? Variant::Book : Variant::Affine);
     edges[trial % 3].reduced = false;
     edges[trial % 3].midDerivative = Rgb(u(random), u(random), u(random));
@@ -93,12 +88,7 @@ TEST(CloughTocher, EvaluatesThePieceThatHoldsThePoint) {
     const PlaneFrame plane = randomPlane(random);
     const std::array<Vec3, 3> V{plane.at({u(random), u(random)}), plane.at({u(random), u(random)}),
                                 plane.at({u(random), u(random)})};
-    std::array<Rgb, 3> f;
-    std::array<RgbGradient, 3> g;
-    for (int i = 0; i < 3; ++i) {
-      f[i] = Rgb(u(random), u(random), u(random));
-      for (Vec3& gc : g[i]) gc = plane.vector({u(random), u(random)});
-    }
+    const auto [f, g, gradientScale] = randomData(random, plane);
     const CloughTocherPatch patch = buildCloughTocher(V, f, g, boundaryEdges(V, Variant::Affine));
     for (const Vec3& lambda : samplePoints(random, 50)) {
       const Vec3 x = lambda.x * V[0] + lambda.y * V[1] + lambda.z * V[2];
@@ -384,15 +374,9 @@ TEST(CloughTocher, PiecesJoinC1AcrossTheInnerEdges) {
 // of the three, as the code has it; and e is the mean of the d.
 TEST(CloughTocher, DAndEAreOnThePlanesOfTheirWedges) {
   std::mt19937 random(8);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   const PlaneFrame plane = randomPlane(random);
   const std::array<Vec3, 3> V{plane.at({0.0, 0.0}), plane.at({1.0, 0.1}), plane.at({0.2, 0.9})};
-  std::array<Rgb, 3> f;
-  std::array<RgbGradient, 3> g;
-  for (int i = 0; i < 3; ++i) {
-    f[i] = Rgb(u(random), u(random), u(random));
-    for (Vec3& gc : g[i]) gc = plane.vector({u(random), u(random)});
-  }
+  const auto [f, g, gradientScale] = randomData(random, plane);
   const CloughTocherPatch patch = buildCloughTocher(V, f, g, boundaryEdges(V, Variant::Book));
   const Vec3 C = patch.C;
   Rgb meanD(0.0);
@@ -467,15 +451,9 @@ TEST(CloughTocher, BookVariantAmplifiesValuesOnNeedles) {
 // d parallel to the edge, or zero, falls back on the edge normal: the book's element.
 TEST(CloughTocher, DirectionAlongTheEdgeFallsBackOnTheNormal) {
   std::mt19937 random(10);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
   const PlaneFrame plane = randomPlane(random);
   const std::array<Vec3, 3> V{plane.at({0.0, 0.0}), plane.at({1.0, 0.2}), plane.at({0.3, 0.8})};
-  std::array<Rgb, 3> f;
-  std::array<RgbGradient, 3> g;
-  for (int i = 0; i < 3; ++i) {
-    f[i] = Rgb(u(random), u(random), u(random));
-    for (Vec3& gc : g[i]) gc = plane.vector({u(random), u(random)});
-  }
+  const auto [f, g, gradientScale] = randomData(random, plane);
   std::array<CrossBoundary, 3> edges = boundaryEdges(V, Variant::Book);
   const CloughTocherPatch book = buildCloughTocher(V, f, g, edges);
   edges[0].d = 3.0 * (V[1] - V[0]);

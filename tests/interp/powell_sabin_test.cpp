@@ -25,24 +25,6 @@ std::array<Vec3, 3> midpoints(const std::array<Vec3, 3>& V) {
   return {0.5 * (V[0] + V[1]), 0.5 * (V[1] + V[2]), 0.5 * (V[2] + V[0])};
 }
 
-struct RandomData {
-  std::array<Rgb, 3> f;
-  std::array<RgbGradient, 3> g;
-  double gradientScale = 0.0;
-};
-RandomData randomData(std::mt19937& random, const PlaneFrame& plane) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  RandomData d;
-  for (int i = 0; i < 3; ++i) {
-    d.f[i] = Rgb(u(random), u(random), u(random));
-    for (Vec3& gc : d.g[i]) {
-      gc = plane.vector({u(random), u(random)});
-      d.gradientScale = std::max(d.gradientScale, glm::length(gc));
-    }
-  }
-  return d;
-}
-
 std::array<Vec3, 3> randomTriangle(std::mt19937& random, const PlaneFrame& plane) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   return {plane.at({u(random), u(random)}), plane.at({u(random), u(random)}), plane.at({u(random), u(random)})};

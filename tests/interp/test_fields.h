@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <array>
 #include <random>
 
@@ -32,6 +33,26 @@ inline PlaneFrame randomPlane(std::mt19937& random) {
   const glm::dmat3 R = randomRotation(random);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   return {3.0 * Vec3(u(random), u(random), u(random)), R[0], R[1]};
+}
+
+// Three corners' values and in-plane gradients, every component uniform in [-1, 1], and the
+// largest gradient's length.
+struct RandomData {
+  std::array<Rgb, 3> f;
+  std::array<RgbGradient, 3> g;
+  double gradientScale = 0.0;
+};
+inline RandomData randomData(std::mt19937& random, const PlaneFrame& plane) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  RandomData d;
+  for (int i = 0; i < 3; ++i) {
+    d.f[i] = Rgb(u(random), u(random), u(random));
+    for (Vec3& gc : d.g[i]) {
+      gc = plane.vector({u(random), u(random)});
+      d.gradientScale = std::max(d.gradientScale, glm::length(gc));
+    }
+  }
+  return d;
 }
 
 // A polynomial per channel in plane coordinates, up to cubic: q(p) = c + a.p + p^T H p / 2 +
