@@ -28,11 +28,9 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
   const bool finalGather = std::find(methods.begin(), methods.end(), kFinalGather) != methods.end();
   command
       .add_option("--method", d.method,
-                  "Interpolant: flat, gouraud (hardware, on triangles), scanline-gouraud (on the polygons, as "
-                  "fig. 9.7), or per pixel: bilinear, quadratic, c1-quadratic (Powell-Sabin), clough-tocher" +
-                      std::string(finalGather ? "; or final-gather (C&W §9.3.1: eq. 9.9 per pixel by ray "
-                                                "casting, the interpolant --gather-interpolant under the integral)"
-                                              : ""))
+                  methodHelp() + std::string(finalGather ? "\n  final-gather: C&W §9.3.1, eq. 9.9 per pixel by ray "
+                                                           "casting, --gather-interpolant under the integral"
+                                                         : ""))
       ->check(methodChoice(methods))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
@@ -171,7 +169,7 @@ int main(int argc, char** argv) {
   CLI::App* sampleCommand = app.add_subcommand(
       "sample", "Print the reconstructed radiosity B and its surface gradient at points (CPU reference)");
   sampleCommand->add_option("file", sample.file, "A glTF scene or radview solution file")->required();
-  sampleCommand->add_option("--method", sample.method, "Interpolant")
+  sampleCommand->add_option("--method", sample.method, methodHelp())
       ->check(methodChoice(methodNames()))
       ->capture_default_str();
   sampleCommand->add_option("--camera", sample.camera, "scanline-gouraud: the view it is seen in, as render --camera");

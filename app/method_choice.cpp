@@ -18,4 +18,11 @@ CLI::Validator methodChoice(const std::vector<std::string>& names) {
       "{" + joined(names, ",") + "}");
 }
 
+std::string methodHelp(bool viewIndependentOnly) {
+  std::string help = "Interpolant (C&W §9.2):";
+  for (const MethodInfo& info : methodRegistry())
+    if (!viewIndependentOnly || !info.viewDependent) help += "\n  " + info.name + ": " + info.summary;
+  return help;
+}
+
 }  // namespace radview

@@ -12,4 +12,8 @@ namespace radview {
 // "X not in {a,b,...}" message CLI11's IsMember gives.
 CLI::Validator methodChoice(const std::vector<std::string>& names);
 
+// "Interpolant (C&W §9.2):" and a line per method of the registry (those needing no view with
+// `viewIndependentOnly`): its name and summary, for an option's help text.
+std::string methodHelp(bool viewIndependentOnly = false);
+
 }  // namespace radview
