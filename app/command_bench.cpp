@@ -193,7 +193,7 @@ int runBench(const BenchOptions& options) {
     if (fixedLevel)
       trianglesPerLevelSquared[methodAndMesh] =
           double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
-    row.triangles = !methodInfo(v.method).bezierPieces ? renderer.triangleCount()
+    row.triangles = !methodInfo(v.method).bezierPieces() ? renderer.triangleCount()
                     : v.tessellation == 0              ? tess.patches
                                                        : tess.trianglesGenerated;
     if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's

@@ -211,7 +211,7 @@ void drawPanel(ViewerState& state) {
   }
   if (state.settings.method == Method::ScanlineGouraud) ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
   if (state.settings.method == Method::Bilinear) ImGui::TextDisabled("exact per pixel");
-  if (methodInfo(state.settings.method).bezierPieces) {
+  if (methodInfo(state.settings.method).bezierPieces()) {
     // Exact per pixel, a fixed tessellation level, or the adaptive level (C&W 9.2).
     int mode = state.settings.tessellation == 0 ? 0 : state.settings.tessellation == gl::kAdaptiveTessellation ? 2 : 1;
     ImGui::RadioButton("Per pixel", &mode, 0);
@@ -271,7 +271,7 @@ void drawPanel(ViewerState& state) {
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");
   if (methodInfo(state.settings.method).c1) ImGui::Checkbox("Split lines [L]", &state.settings.splitLines);
-  if (methodInfo(state.settings.method).bezierPieces) {
+  if (methodInfo(state.settings.method).bezierPieces()) {
     bool surface = state.settings.surfaceHeight > 0.0;
     if (ImGui::Checkbox("Radiosity surface, fig. 9.13 [H]", &surface))
       state.settings.surfaceHeight = surface ? 0.15 : 0.0;
@@ -283,7 +283,7 @@ void drawPanel(ViewerState& state) {
       ImGui::Checkbox("Control net [N]", &state.settings.controlNet);
     }
   }
-  if (methodInfo(state.settings.method).bezierPieces && state.settings.tessellation != 0)
+  if (methodInfo(state.settings.method).bezierPieces() && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
 
   drawSolveControls(state);
@@ -306,7 +306,7 @@ void drawPanel(ViewerState& state) {
 
   section("Frame");
   ImGui::Text("GPU %.2f ms   CPU %.2f ms", state.gpuFrameMs, state.cpuFrameMs);
-  if (methodInfo(state.settings.method).bezierPieces) {
+  if (methodInfo(state.settings.method).bezierPieces()) {
     const gl::TessellationStatistics& t = state.tessellation;
     ImGui::Text("%zu patches, %zu draws, mean level %.2f", t.patches, t.draws, t.averageLevel);
     ImGui::Text("%zu triangles generated", t.trianglesGenerated);

@@ -9,7 +9,7 @@ std::vector<BenchVariant> benchVariants(const std::vector<int>& levels, const st
   std::vector<BenchVariant> variants;
   for (const MethodInfo& info : methodRegistry()) {
     const Method m = info.method;
-    if (!info.bezierPieces) {
+    if (!info.bezierPieces()) {
       variants.push_back({m, 0, 0.5, true, "per pixel"});
       continue;
     }

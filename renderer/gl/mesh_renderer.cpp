@@ -244,14 +244,15 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   // Push surfaces back a little so edge overlays drawn at the same depth win.
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  if (method == Method::Flat || method == Method::Gouraud) {
+  const GpuPath path = methodInfo(method).gpu;
+  if (path == GpuPath::Triangles) {
     meshProgram_.set("clipFromWorld", clipFromWorld);
     meshProgram_.set("method", static_cast<int>(method));
     meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
     meshProgram_.use();
     glBindVertexArray(meshVao_);
     glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
-  } else if (method == Method::ScanlineGouraud || method == Method::Bilinear) {
+  } else if (path == GpuPath::Polygons) {
     drawPolygons(method == Method::ScanlineGouraud ? PolygonMode::Scanline : PolygonMode::Bilinear, meshVao_,
                  triangleVertices_, clipFromWorld, width, height);
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
@@ -328,7 +329,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     throw Error("difference view: no reference image to compare with (give one with --reference)");
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
-  if (settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces) {
+  if (settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces()) {
     const double lift = settings.surfaceHeight * mesh_->bounds().diagonal();
     camera.zFar += lift;
     camera.zNear = std::max(camera.zNear - lift, camera.zFar * 1e-4);
@@ -361,13 +362,13 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 
 bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
   if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
-  if (methodInfo(settings.method).bezierPieces)
+  if (methodInfo(settings.method).bezierPieces())
     uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
   // The comparison is drawn per pixel: deferred for the C1 methods, by its own Bezier pass for
   // the quadratic one.
   const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
   const bool comparisonDeferred = isDeferred(settings.comparisonMethod, BezierEvaluation{});
-  if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces &&
+  if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces() &&
       (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
       comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
     if (comparisonDeferred) {
@@ -381,7 +382,8 @@ bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& 
       comparisonPatchesFor_ = comparisonKey;
     }
   }
-  const bool drawNet = settings.controlNet && settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces;
+  const bool drawNet =
+      settings.controlNet && settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces();
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
   return drawNet;
 }
@@ -462,7 +464,7 @@ void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& colo
 
 void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
                                 bool drawNet) {
-  const bool bezierMethod = methodInfo(settings.method).bezierPieces;
+  const bool bezierMethod = methodInfo(settings.method).bezierPieces();
   const bool lines = (settings.elementEdges && edgeVertices_ > 0) ||
                      (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet));
   const bool markers =

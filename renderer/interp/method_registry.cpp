@@ -7,25 +7,27 @@ namespace radview {
 
 const std::vector<MethodInfo>& methodRegistry() {
   static const std::vector<MethodInfo> registry = {
-      {Method::Flat, "flat", "", "Flat", '1', "C&W §9.2", "constant: the element's mean nodal value", false, false,
-       false},
+      {Method::Flat, "flat", "", "Flat", '1', "C&W §9.2", "constant: the element's mean nodal value", false,
+       GpuPath::Triangles, false},
       {Method::Gouraud, "gouraud", "linear", "Gouraud", '2', "C&W §9.2, fig. 9.7",
        "linear on each element's triangles, as the hardware interpolates (perspective-correct or in screen "
        "space)",
-       false, false, false},
+       false, GpuPath::Triangles, false},
       {Method::ScanlineGouraud, "scanline-gouraud", "", "Scanline Gouraud", '3', "C&W §9.2, fig. 9.7-9.8",
        "down the polygon's edges, then across each scanline, as scanline hardware did: depends on the view", true,
-       false, false},
+       GpuPath::Polygons, false},
       {Method::Bilinear, "bilinear", "", "Bilinear", '4', "C&W §9.2, fig. 9.9",
-       "quads in their bilinear parameter space, exact per pixel (orientation invariant)", false, false, false},
+       "quads in their bilinear parameter space, exact per pixel (orientation invariant)", false, GpuPath::Polygons,
+       false},
       {Method::Quadratic, "quadratic", "", "Quadratic", '5', "C&W §9.2",
-       "Lagrange on quadratic elements (mid-edge nodes), serendipity on quads: C0", false, true, false},
+       "Lagrange on quadratic elements (mid-edge nodes), serendipity on quads: C0", false, GpuPath::BezierPieces,
+       false},
       {Method::C1Quadratic, "c1-quadratic", "", "C1 quadratic", '6', "C&W §9.2.2, fig. 9.9, 9.14b",
-       "Powell-Sabin split into quadratic Bezier pieces (Reichert): C1", false, true, true},
+       "Powell-Sabin split into quadratic Bezier pieces (Reichert): C1", false, GpuPath::BezierPieces, true},
       {Method::CloughTocher, "clough-tocher", "", "Clough-Tocher", '7', "C&W §9.2.2, fig. 9.14c",
        "three cubic Bezier pieces per triangle: C1, relaxed to C0 or C-1 along tagged discontinuity edges "
        "(Salesin et al. 1992)",
-       false, true, true},
+       false, GpuPath::BezierPieces, true},
   };
   return registry;
 }

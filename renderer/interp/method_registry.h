@@ -20,6 +20,13 @@ enum class Method : int {
   CloughTocher,     // three cubic Bezier pieces per triangle, C1 with relaxations (Salesin et al.)
 };
 
+// How the GPU renderer (gl/mesh_renderer.h) draws a method.
+enum class GpuPath : int {
+  Triangles,     // the element triangles, the rasteriser interpolating (flat, Gouraud)
+  Polygons,      // per pixel from each element's polygon (scanline Gouraud, bilinear)
+  BezierPieces,  // Bezier or Lagrange pieces: exact per pixel, or tessellated
+};
+
 struct MethodInfo {
   Method method;
   std::string name;     // "gouraud": the command line's, files' and messages' name
@@ -29,8 +36,9 @@ struct MethodInfo {
   std::string section;  // where the book treats it: "C&W §9.2, fig. 9.7"
   std::string summary;  // one line: --help, the panel's tooltip
   bool viewDependent;   // the value depends on how the element lies on the screen
-  bool bezierPieces;    // drawn as Bezier or Lagrange pieces: exact per pixel or tessellated
-  bool c1;              // C1 across element edges (relaxed where the mesh tags them)
+  GpuPath gpu;
+  bool c1;  // C1 across element edges (relaxed where the mesh tags them)
+  bool bezierPieces() const { return gpu == GpuPath::BezierPieces; }
 };
 
 // In enum order.

@@ -19,7 +19,7 @@ TEST(BenchVariants, EveryMethodPerPixelAndThePiecesAtEveryLevelAndTolerance) {
     EXPECT_TRUE(v.relaxed) << "no C0 edges: nothing to drop";
   }
   for (const MethodInfo& info : methodRegistry())
-    EXPECT_EQ(rows[info.method], info.bezierPieces ? 4 : 1) << info.name << ": per pixel, 2 levels, 1 tolerance";
+    EXPECT_EQ(rows[info.method], info.bezierPieces() ? 4 : 1) << info.name << ": per pixel, 2 levels, 1 tolerance";
   EXPECT_EQ(variants.front().setting, "per pixel");
   const BenchVariant& adaptive =
       variants[size_t(std::find_if(variants.begin(), variants.end(),
