@@ -194,8 +194,8 @@ int runBench(const BenchOptions& options) {
       trianglesPerLevelSquared[methodAndMesh] =
           double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
     row.triangles = !methodInfo(v.method).bezierPieces() ? renderer.triangleCount()
-                    : v.tessellation == 0              ? tess.patches
-                                                       : tess.trianglesGenerated;
+                    : v.tessellation == 0                ? tess.patches
+                                                         : tess.trianglesGenerated;
     if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
       std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
       writePng(renderer.readDisplay(), options.outDir + "/" + name);

@@ -71,10 +71,10 @@ int runInfo(const InfoOptions& options) {
     std::cout << "bounds: " << scene.bounds() << '\n';
     std::cout << "-- uniform mesh, element size " << viewed.elementSize << ", lit directly by the emitters:\n";
   } else {
-    std::cout << "materials: " << file.mesh.materials.size() << '\n';
-    for (const Material& m : file.mesh.materials) std::cout << "  " << m << '\n';
+    std::cout << "materials: " << viewed.mesh.materials.size() << '\n';
+    for (const Material& m : viewed.mesh.materials) std::cout << "  " << m << '\n';
     std::cout << "cameras: " << file.scene.cameras.size() << '\n';
-    std::cout << "bounds: " << file.mesh.bounds() << '\n';
+    std::cout << "bounds: " << viewed.mesh.bounds() << '\n';
   }
   printMesh(viewed.mesh);
   for (const std::string& w : file.warnings) std::cout << "warning: " << w << '\n';

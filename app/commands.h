@@ -72,7 +72,7 @@ struct SampleOptions {
 };
 
 struct ViewerOptions {
-  std::string file;  // empty: the bundled Cornell box
+  std::string file;  // empty: the bundled solved Cornell box (app/examples.h)
   int frames = 0;    // > 0: run that many frames, then exit
   std::string screenshot;
   std::string size = "1280x800";

@@ -1,9 +1,9 @@
 // radview: a viewer for radiosity solutions (Cohen & Wallace, Radiosity and Realistic Image
 // Synthesis, §9.2-9.3). This file is the command line; each subcommand lives in its own file.
-#include "app/asset_paths.h"
 #include "app/command_bench.h"
 #include "app/command_solve.h"
 #include "app/commands.h"
+#include "app/examples.h"
 #include "app/method_choice.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
   std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "radview: a viewer for radiosity solutions (Cohen & Wallace §9.2-9.3).\n"
-      "radview [FILE] opens the viewer (the bundled Cornell box without FILE); where no display\n"
+      "radview [FILE] opens the viewer (the bundled solved Cornell box without FILE); where no display\n"
       "exists it renders FILE headless to radview-<name>.png instead.",
       "radview"};
   app.footer(std::string("\n") + shortcutHelp());
@@ -216,7 +216,14 @@ int main(int argc, char** argv) {
     if (*sampleCommand) return runSample(sample);
     if (*solveCommand) return runSolve(solve);
     if (*benchCommand) return runBench(bench);
-    if (viewer.file.empty()) viewer.file = bundledScenePath();
+    if (viewer.file.empty()) viewer.file = examplePath(bundledExamples().front());
+    // A bundled example opens the way that shows what it demonstrates, unless told otherwise.
+    if (const Example* example = exampleForFile(viewer.file); example && app.count("--method") == 0) {
+      viewer.display.method = methodInfo(example->method).name;
+      viewer.display.edges |= example->elementEdges;
+      viewer.display.discontinuities |= example->discontinuityEdges;
+      viewer.display.tVertices |= example->tVertices;
+    }
     return runViewer(viewer);
   } catch (const Error& e) {
     std::fprintf(stderr, "radview: %s\n", e.what());

@@ -1,13 +1,16 @@
 #include "app/background_open.h"
 #include "app/background_pieces.h"
 #include "app/commands.h"
+#include "app/examples.h"
 #include "app/viewer_gather.h"
 #include "app/viewer_input.h"
 #include "app/viewer_panel.h"
 #include "core/error.h"
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
+#include "edit/edge_picker.h"
 #include "mesh/solution_file.h"
+#include "mesh/topology.h"
 #include "solve/background_solve.h"
 
 #include <epoxy/gl.h>
@@ -38,11 +41,22 @@ void adoptViewedFile(ViewerState& state, ViewedFile viewed) {
   state.camera = state.homeCamera;
   state.rollSteps = 0;
   state.pathToOpen = path;
-  state.solutionPath = std::filesystem::path(path).stem().string() + "-solved.glb";
+  state.solutionPath =
+      std::filesystem::path(path).stem().string() + (state.viewed.file.isSolution ? "-edited.glb" : "-solved.glb");
   state.solveStatus.clear();
   state.solving = false;
   state.status = "opened " + path;
   for (const std::string& w : state.viewed.file.warnings) state.status += "\nwarning: " + w;
+  // Opened from the list of examples: shown the way the example asks for.
+  if (const Example* example = state.requestedExample; example && exampleForFile(path) == example) {
+    gl::RenderSettings& s = state.settings;
+    s.method = example->method;
+    s.elementEdges = example->elementEdges;
+    s.discontinuityEdges = example->discontinuityEdges;
+    s.tVertices = example->tVertices;
+    state.gather.on = false;
+  }
+  state.requestedExample = nullptr;
 }
 
 std::string nextScreenshotName() {
@@ -91,6 +105,79 @@ struct ViewerWork {
   BackgroundPieces pieces;
   ViewerGather gather;
   uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
+  ContinuityEditor editor;
+  std::unique_ptr<EdgePicker> picker;  // over the shown mesh's elements; made at the first pick
+
+  // A new mesh on screen (a file opened, a solve's progress): edits and picks were of the old.
+  void meshReplaced(ViewerState& state) {
+    editor.clear();
+    picker.reset();
+    state.undoSteps = 0;
+    state.pickedEdge.reset();
+    state.pickedDescription.clear();
+  }
+
+  // The edited mesh to the renderer; the pieces and the gather see a new version.
+  void showEdited(ViewerState& state) {
+    renderer.setMesh(state.viewed.mesh);
+    ++meshVersion;
+    state.undoSteps = editor.steps();
+    if (state.pickedEdge) state.pickedDescription = describePicked(state.viewed.mesh, *state.pickedEdge);
+  }
+
+  static std::string describePicked(const RadiosityMesh& mesh, EdgeRef ref) {
+    const EdgeDescription d = describeEdge(mesh, MeshTopology(mesh), ref);
+    std::ostringstream text;
+    text.precision(4);
+    text << "edge " << ref.edge << " of element " << ref.element << ": " << toString(d.continuity) << ", "
+         << (d.sides.size() == 2   ? (d.ownNodes ? "each side its own nodes" : "sides share their nodes")
+             : d.sides.size() == 1 ? "on the boundary"
+                                   : "non-manifold");
+    for (uint32_t n : {d.a, d.b}) {
+      const Node& node = mesh.nodes[n];
+      text << "\nnode " << n << " at (" << node.position.x << ", " << node.position.y << ", " << node.position.z
+           << "), B (" << node.B.r << ", " << node.B.g << ", " << node.B.b << ")";
+    }
+    return text.str();
+  }
+
+  // A finished click or drag in edit mode retags the edges it passed; undo steps back. The
+  // stroke is in window coordinates; the view is `view` framebuffer pixels from `left` on, the
+  // framebuffer `scale` times the window.
+  void handleEdit(ViewerState& state, int left, int width, int height, double scale) {
+    if (state.undoRequested) {
+      state.undoRequested = false;
+      try {
+        if (editor.undo(state.viewed.mesh)) {
+          showEdited(state);
+          state.status = "undone: " + std::to_string(editor.steps()) + " continuity edits left";
+        }
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+    if (state.stroke.empty()) return;
+    std::vector<std::pair<double, double>> stroke = std::move(state.stroke);
+    state.stroke.clear();
+    if (width <= 0 || height <= 0) return;
+    try {
+      if (!picker) picker = std::make_unique<EdgePicker>(state.viewed.mesh);
+      for (auto& [x, y] : stroke) x = x * scale - left, y *= scale;
+      const Camera framed = framedFor(state.camera, double(width) / height);
+      const std::vector<EdgeRef> edges = picker->pickAlong(framed, width, height, stroke);
+      if (edges.empty()) {
+        state.status = "no element edge there (click within a few pixels of one)";
+        return;
+      }
+      const std::optional<std::string> refused = editor.cycle(state.viewed.mesh, edges);
+      state.pickedEdge = edges.back();
+      showEdited(state);
+      state.status =
+          refused ? *refused : std::to_string(edges.size()) + (edges.size() == 1 ? " edge" : " edges") + " retagged";
+    } catch (const std::exception& e) {
+      state.status = e.what();
+    }
+  }
 
   // A dropped file or the panel's Open, loaded and prepared in the background. All or
   // nothing: the previous file stays on screen and in the panel unless the new one both loads
@@ -110,6 +197,7 @@ struct ViewerWork {
         renderer.adoptMesh(std::move(*opened->prepared));
         ++meshVersion;
         adoptViewedFile(state, std::move(*opened->viewed));
+        meshReplaced(state);
       } catch (const std::exception& e) {
         state.status = e.what();
       }
@@ -132,6 +220,7 @@ struct ViewerWork {
         ++meshVersion;
         state.viewed.tVertexCount = renderer.tVertexCount();
         state.viewed.mesh = std::move(*solved);
+        meshReplaced(state);
       } catch (const std::exception& e) {
         state.status = e.what();
       }
@@ -153,16 +242,19 @@ struct ViewerWork {
     }
   }
 
-  // The scene at the framebuffer's size: the gather's image or the method (Gouraud while a C1
-  // method's pieces are set up, when `piecesInBackground`), and the difference's numbers.
-  void drawScene(ViewerState& state, int width, int height, int frame, bool waitForSpp, bool piecesInBackground) {
+  // The scene in the framebuffer's columns from `left` on (beside the panel): the gather's image
+  // or the method (Gouraud while a C1 method's pieces are set up, when `piecesInBackground`),
+  // and the difference's numbers.
+  void drawScene(ViewerState& state, int left, int width, int height, int frame, bool waitForSpp,
+                 bool piecesInBackground) {
     try {
       fitClipPlanes(state.camera, state.viewed.mesh.bounds());
-      gather.update(state.gather, state.viewed.mesh, meshVersion, state.camera, width, height, renderer, waitForSpp);
+      const Camera framed = framedFor(state.camera, double(width) / height);
+      gather.update(state.gather, state.viewed.mesh, meshVersion, framed, width, height, renderer, waitForSpp);
       const gl::RenderSettings drawn =
           piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
-      renderer.render(state.camera, drawn, width, height);
-      renderer.presentToDefaultFramebuffer(width, height);
+      renderer.render(framed, drawn, width, height);
+      renderer.presentToDefaultFramebuffer(left, width, height);
     } catch (const std::exception& e) {
       state.status = e.what();
     }
@@ -222,6 +314,9 @@ void startImGui(GLFWwindow* window) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
 }
+
+// The panel's width before its first frame, so that the first frame is framed beside it.
+float initialPanelWidth() { return kPanelWidth * ImGui::GetIO().FontGlobalScale; }
 
 }  // namespace
 
@@ -283,8 +378,11 @@ int runViewer(const ViewerOptions& options) {
   ViewerInput input;
   input.state = &state;
   installInput(window, input);
+  // A click shorter than a frame still reads as pressed at the next poll.
+  glfwSetInputMode(window, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
   startImGui(window);
   session.imgui = true;
+  state.panelWidth = initialPanelWidth();
 
   int status = 0;
   for (int frame = 1; !glfwWindowShouldClose(window); ++frame) {
@@ -296,10 +394,17 @@ int runViewer(const ViewerOptions& options) {
     work.handleSolve(state);
     handleWriteSolution(state);
     work.handleReference(state);
-    int fbWidth = 0, fbHeight = 0;
+    int fbWidth = 0, fbHeight = 0, windowWidth = 0, windowHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
-    if (fbWidth > 0 && fbHeight > 0)
-      work.drawScene(state, fbWidth, fbHeight, frame, lastFrame && options.framesWaitForSpp, piecesInBackground);
+    glfwGetWindowSize(window, &windowWidth, &windowHeight);
+    // The panel's columns in framebuffer pixels (a HiDPI framebuffer has more than the window).
+    const int panel = windowWidth > 0 ? int(std::lround(state.panelWidth * double(fbWidth) / windowWidth)) : 0;
+    const float background[4] = {0.08f, 0.08f, 0.09f, 1.0f};
+    glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
+    work.handleEdit(state, panel, fbWidth - panel, fbHeight, windowWidth > 0 ? double(fbWidth) / windowWidth : 1.0);
+    if (fbWidth - panel > 0 && fbHeight > 0)
+      work.drawScene(state, panel, fbWidth - panel, fbHeight, frame, lastFrame && options.framesWaitForSpp,
+                     piecesInBackground);
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();

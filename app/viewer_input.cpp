@@ -13,10 +13,15 @@ namespace radview {
 
 namespace {
 
-void onKey(GLFWwindow* window, int key, int, int action, int) {
+void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   ViewerState& s = *static_cast<ViewerInput*>(glfwGetWindowUserPointer(window))->state;
+  if (mods & GLFW_MOD_CONTROL) {
+    if (key == GLFW_KEY_Z) s.undoRequested = true;
+    if (key == GLFW_KEY_S) s.writeSolutionRequested = true;
+    return;
+  }
   // GLFW's number keys are their characters' codes.
   if (const std::optional<Method> method =
           key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
@@ -83,6 +88,12 @@ void onKey(GLFWwindow* window, int key, int, int action, int) {
     case GLFW_KEY_KP_SUBTRACT:
       s.settings.exposure -= 0.5;
       break;
+    case GLFW_KEY_K:
+      setContinuityEditing(s, !s.editContinuity);
+      break;
+    case GLFW_KEY_TAB:
+      s.panelShown = !s.panelShown;
+      break;
     case GLFW_KEY_ESCAPE:
       glfwSetWindowShouldClose(window, GLFW_TRUE);
       break;
@@ -115,6 +126,19 @@ void handleDrag(GLFWwindow* window, ViewerInput& input) {
   const bool left = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
   const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
                      glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+  // Editing continuity, the left button draws a stroke instead of orbiting; it is handed to
+  // the loop when the button is let go.
+  if (input.state->editContinuity && (left || !input.stroke.empty())) {
+    if (left && (!input.stroke.empty() || !ImGui::GetIO().WantCaptureMouse)) {
+      input.stroke.emplace_back(x, y);
+    } else if (!left) {
+      input.state->stroke = std::move(input.stroke);
+      input.stroke.clear();
+    }
+    input.lastX = x;
+    input.lastY = y;
+    return;
+  }
   if (!left && !right) {
     input.dragging = false;
   } else if (!input.dragging) {

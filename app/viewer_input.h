@@ -5,6 +5,8 @@
 #include "app/viewer_panel.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -15,12 +17,14 @@ struct ViewerInput {
   std::string droppedPath;  // set by a drop, taken by the loop
   double lastX = 0.0, lastY = 0.0;
   bool dragging = false;
+  std::vector<std::pair<double, double>> stroke;  // the left button's path while editing continuity
 };
 
 // Sets `input` as the window's user pointer and the key, scroll and drop callbacks; before
 // ImGui's, which chain to them.
 void installInput(GLFWwindow* window, ViewerInput& input);
-// Mouse drags, polled once a frame: left orbits, right or middle pans.
+// Mouse drags, polled once a frame: left orbits (or, editing continuity, strokes across
+// edges), right or middle pans.
 void handleDrag(GLFWwindow* window, ViewerInput& input);
 
 }  // namespace radview

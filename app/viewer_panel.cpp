@@ -1,6 +1,7 @@
 #include "app/viewer_panel.h"
 
 #include "app/commands.h"
+#include "app/examples.h"
 #include "mesh/display_mesh.h"
 
 #include <imgui.h>
@@ -17,6 +18,11 @@ namespace radview {
 void rotateView45(ViewerState& state) {
   roll(state.camera, glm::radians(45.0));
   state.rollSteps = (state.rollSteps + 1) % 8;
+}
+
+void setContinuityEditing(ViewerState& state, bool on) {
+  state.editContinuity = on;
+  if (on) state.settings.elementEdges = state.settings.discontinuityEdges = true;
 }
 
 void resetCamera(ViewerState& state) {
@@ -36,7 +42,9 @@ const std::string& shortcutHelp() {
            "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
            "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
            "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
-           "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder), Esc quit.\n"
+           "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder),\n"
+           "K edit continuity (click or drag across edges: C1 -> C0 -> C-1), Ctrl+Z undo, Ctrl+S write the solution,\n"
+           "Tab hide or show the panel, Esc quit.\n"
            "Mouse: left drag orbit, right or middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to "
            "open it.";
   }();
@@ -123,25 +131,45 @@ void drawGatherControls(ViewerState& state) {
 
 // A scene's solve in the background (radview solve's defaults), and writing what is shown.
 void drawSolveControls(ViewerState& state) {
-  if (state.viewed.file.isSolution) return;
   section("Radiosity solution");
-  if (state.solving) {
+  if (state.viewed.file.isSolution) {
+    ImGui::TextDisabled("as the file holds it%s", state.undoSteps > 0 ? ", with continuity edits" : "");
+  } else if (state.solving) {
     if (ImGui::Button("Cancel solve [G]")) state.cancelSolveRequested = true;
   } else if (ImGui::Button("Solve [G]")) {
     state.solveRequested = true;
   }
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
-        "the partial solution is shown as it converges (with the ambient term)");
-  ImGui::TextWrapped("%s", state.solveStatus.empty() ? "showing direct light, unoccluded" : state.solveStatus.c_str());
+  if (!state.viewed.file.isSolution) {
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
+          "the partial solution is shown as it converges (with the ambient term)");
+    ImGui::TextWrapped("%s",
+                       state.solveStatus.empty() ? "showing direct light, unoccluded" : state.solveStatus.c_str());
+  }
   char buffer[1024];
   std::snprintf(buffer, sizeof buffer, "%s", state.solutionPath.c_str());
   ImGui::PushItemWidth(240);
   if (ImGui::InputText("##solution", buffer, sizeof buffer)) state.solutionPath = buffer;
   ImGui::PopItemWidth();
   ImGui::SameLine();
-  if (ImGui::Button("Write solution")) state.writeSolutionRequested = true;
+  if (ImGui::Button("Write solution [Ctrl+S]")) state.writeSolutionRequested = true;
+}
+
+// Retagging edges in the view (Salesin, Lischinski, DeRose 1992), its undo, and the last edge.
+void drawContinuityControls(ViewerState& state) {
+  section("Continuity (Salesin et al. 1992)");
+  bool on = state.editContinuity;
+  if (ImGui::Checkbox("Edit: click or drag across edges [K]", &on)) setContinuityEditing(state, on);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Each edge clicked or crossed goes C1 -> C0 -> C-1 -> C1; C-1 splits shared nodes where it "
+        "cuts the elements around them. Left drag draws the stroke instead of orbiting.");
+  ImGui::SameLine();
+  if (state.undoSteps == 0) ImGui::BeginDisabled();
+  if (ImGui::Button("Undo [Ctrl+Z]")) state.undoRequested = true;
+  if (state.undoSteps == 0) ImGui::EndDisabled();
+  if (!state.pickedDescription.empty()) ImGui::TextWrapped("%s", state.pickedDescription.c_str());
 }
 
 // Labels beside the colour bar the false-colour views draw at the window's right edge.
@@ -169,11 +197,43 @@ void drawColourBarLabels(const ViewerState& state) {
                 unit);
 }
 
+// The bundled files, each opened the way that shows what it demonstrates (app/examples.h).
+void drawExamples(ViewerState& state) {
+  if (!ImGui::CollapsingHeader("Examples", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const std::string shown = std::filesystem::path(state.viewed.file.path).filename().string();
+  for (const Example& example : bundledExamples()) {
+    if (ImGui::Selectable(example.title.c_str(), example.file == shown)) {
+      try {
+        state.pathToOpen = examplePath(example);
+        state.openRequested = true;
+        state.requestedExample = &example;
+      } catch (const std::exception& e) {
+        state.status = e.what();
+      }
+    }
+    ImGui::Indent();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", example.demonstrates.c_str());
+    ImGui::PopStyleColor();
+    ImGui::Unindent();
+  }
+}
+
 void drawPanel(ViewerState& state) {
   drawColourBarLabels(state);
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("radview");
+  state.panelWidth = 0.0f;
+  if (!state.panelShown) return;
+  // Pinned to the left edge at full height, so the scene can be framed beside it.
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth * ImGui::GetIO().FontGlobalScale, display.y), ImGuiCond_Always);
+  const bool open =
+      ImGui::Begin("radview  (Tab hides this panel)", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  if (!open) {  // collapsed to its title bar
+    ImGui::End();
+    return;
+  }
+  state.panelWidth = ImGui::GetWindowWidth();
 
   const ViewedFile& viewed = state.viewed;
   ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
@@ -181,6 +241,7 @@ void drawPanel(ViewerState& state) {
                       : state.solveStatus.empty() ? "scene (direct light)"
                                                   : "scene (radiosity solve)";
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
+  drawExamples(state);
 
   section("Interpolant (C&W 9.2)");
   const int kFinalGatherChoice = int(methodRegistry().size());  // after the methods
@@ -286,6 +347,7 @@ void drawPanel(ViewerState& state) {
   if (methodInfo(state.settings.method).bezierPieces() && state.settings.tessellation != 0)
     ImGui::Checkbox("Tessellation triangles [W]", &state.settings.tessellationTriangles);
 
+  drawContinuityControls(state);
   drawSolveControls(state);
 
   section("View");

@@ -3,11 +3,15 @@
 #include "app/background_gather.h"
 #include "app/viewed_file.h"
 #include "core/camera.h"
+#include "edit/continuity_edit.h"
 #include "gl/mesh_renderer.h"
 #include "interp/interpolant.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace radview {
 
@@ -48,13 +52,30 @@ struct ViewerState {
   std::string solutionPath;  // where "Write solution" writes the mesh shown
   bool writeSolutionRequested = false;
   GatherControls gather;
+  // The panel sits at the window's left edge, full height; the scene is framed in the rest.
+  bool panelShown = true;                            // Tab hides and shows it
+  float panelWidth = 0.0f;                           // in window coordinates, as last drawn; 0 when hidden or collapsed
+  const struct Example* requestedExample = nullptr;  // opening from the list: applied once it opens
+  // Editing continuity (Salesin et al. 1992): in edit mode a left click or drag retags the
+  // element edges it passes (C1 -> C0 -> C-1), undo steps back.
+  bool editContinuity = false;
+  std::vector<std::pair<double, double>> stroke;  // a finished click or drag, window coordinates
+  bool undoRequested = false;
+  size_t undoSteps = 0;
+  std::optional<EdgeRef> pickedEdge;  // the last edge retagged, described in the panel
+  std::string pickedDescription;
 };
 
 void rotateView45(ViewerState& state);
+// Edit mode on also shows the element and discontinuity edges, which it is about.
+void setContinuityEditing(ViewerState& state, bool on);
 void resetCamera(ViewerState& state);
 
 // Keyboard shortcuts, as listed in the panel and in --help.
 const std::string& shortcutHelp();
+
+// The panel's width before scaling to the monitor's content scale.
+constexpr float kPanelWidth = 400.0f;
 
 void drawPanel(ViewerState& state);
 

@@ -101,6 +101,12 @@ Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::
   return c;
 }
 
+Camera framedFor(const Camera& camera, double aspect) {
+  Camera framed = camera;
+  if (aspect > 0.0 && aspect < 1.0) framed.yfov = 2.0 * std::atan(std::tan(0.5 * camera.yfov) / aspect);
+  return framed;
+}
+
 void orbit(Camera& camera, double yawRadians, double pitchRadians) {
   Vec3 offset = camera.eye - camera.target;
   const Vec3 up = glm::normalize(camera.up);

@@ -22,6 +22,12 @@ struct Camera {
   Vec3 forward() const { return glm::normalize(target - eye); }
 };
 
+// The camera as a view of this aspect ratio (width / height) shows it: the same, or, for a
+// view narrower than it is tall, a wider vertical field, so that the view covers the camera's
+// vertical field across its width too and what a camera was fitted to stays in view whatever
+// the window's shape.
+Camera framedFor(const Camera& camera, double aspect);
+
 // Sets zNear/zFar to enclose `bounds` as seen from the camera, with a near plane no closer
 // than 1e-4 of the far one (depth precision).
 void fitClipPlanes(Camera& camera, const Bounds& bounds);

@@ -541,9 +541,9 @@ LinearImage MeshRenderer::readLinear() const {
                             GL_FLOAT)};
 }
 
-void MeshRenderer::presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const {
-  glBlitNamedFramebuffer(targets_.displayFramebuffer(), 0, 0, 0, targets_.width(), targets_.height(), 0, 0,
-                         framebufferWidth, framebufferHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+void MeshRenderer::presentToDefaultFramebuffer(int left, int width, int height) const {
+  glBlitNamedFramebuffer(targets_.displayFramebuffer(), 0, 0, 0, targets_.width(), targets_.height(), left, 0,
+                         left + width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 Image readDefaultFramebuffer(int width, int height) {

@@ -115,8 +115,9 @@ class MeshRenderer {
   // What the last difference view compared with, as a reference for displayDifference: the
   // comparison method's linear image, or the reference image.
   ReferenceImage readComparison() const;
-  // Copies the last rendered image into the window's back buffer.
-  void presentToDefaultFramebuffer(int framebufferWidth, int framebufferHeight) const;
+  // Copies the last rendered image into the window's back buffer, its columns from `left` on
+  // (the viewer frames the scene beside its panel), at width x height framebuffer pixels.
+  void presentToDefaultFramebuffer(int left, int width, int height) const;
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
   double gpuFrameMs() const { return gpuFrameMs_; }
   size_t triangleCount() const { return triangleVertices_ / 3; }

@@ -78,5 +78,21 @@ TEST(Camera, OrbitKeepsTheDistanceAndNeverFlipsOverThePole) {
   EXPECT_GT(glm::length(glm::cross(c.forward(), c.up)), 1e-3);
 }
 
+// A view narrower than tall widens the vertical field so its width covers the camera's
+// vertical field: a point at the edge of that field stays at the view's side edge.
+TEST(Camera, FramedForANarrowViewKeepsTheFieldAcrossItsWidth) {
+  Camera c;
+  c.yfov = glm::radians(45.0);
+  EXPECT_EQ(framedFor(c, 1.6).yfov, c.yfov);
+  EXPECT_EQ(framedFor(c, 1.0).yfov, c.yfov);
+  const double aspect = 0.5;
+  const Camera framed = framedFor(c, aspect);
+  EXPECT_GT(framed.yfov, c.yfov);
+  // A point on the camera's vertical field's edge, turned to the side: x_ndc = 1.
+  const double half = std::tan(0.5 * c.yfov);
+  const glm::dvec4 clip = framed.clipFromView(aspect) * glm::dvec4(half, 0.0, -1.0, 1.0);
+  EXPECT_NEAR(clip.x / clip.w, 1.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace radview

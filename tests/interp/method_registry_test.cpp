@@ -19,7 +19,9 @@ TEST(MethodRegistry, EntriesAreInEnumOrderWithOneNameAndKeyEach) {
     const MethodInfo& info = methodRegistry()[i];
     EXPECT_EQ(size_t(info.method), i) << info.name;
     EXPECT_TRUE(names.insert(info.name).second) << "name used twice: " << info.name;
-    if (!info.alias.empty()) EXPECT_TRUE(names.insert(info.alias).second) << "alias used twice: " << info.alias;
+    if (!info.alias.empty()) {
+      EXPECT_TRUE(names.insert(info.alias).second) << "alias used twice: " << info.alias;
+    }
     EXPECT_TRUE(keys.insert(info.key).second) << "key used twice: " << info.key;
     EXPECT_EQ(methodForKey(info.key), info.method) << info.name;
     EXPECT_FALSE(info.label.empty() || info.summary.empty() || info.section.empty()) << info.name;
@@ -59,7 +61,9 @@ TEST(MethodRegistry, EveryMethodHasACpuInterpolantAndViewDependentOnesNeedAView)
     if (info.method == Method::Quadratic) continue;  // needs quadratic elements
     EXPECT_NEAR(makeInterpolant(mesh, info.method, withView)->evaluate(0, Vec3(0.5, 0.5, 0)).B.r, 1.5, 1e-9)
         << info.name << ": every method reproduces the centre of linear data on a square";
-    if (info.viewDependent) EXPECT_THROW(makeInterpolant(mesh, info.method), Error) << info.name;
+    if (info.viewDependent) {
+      EXPECT_THROW(makeInterpolant(mesh, info.method), Error) << info.name;
+    }
   }
 }
 

@@ -1,0 +1,65 @@
+#pragma once
+// Retagging the continuity of element edges in a solution, as Salesin, Lischinski and DeRose
+// (1992) do interactively: an edge is C1 (smooth), C0 (B continuous, its derivative not) or
+// C-1 (B jumps). A C-1 edge whose two sides share nodes splits them wherever the C-1 edges now
+// separate the elements around a node (the solver's discontinuity mesher duplicates nodes the
+// same way), and taking the tag away merges them back. Elements keep their indices, so an
+// EdgeRef names the same edge before and after any edit.
+#include "mesh/radiosity_mesh.h"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace radview {
+
+class MeshTopology;
+
+// Edge `edge` of element `element`: corners[edge] -> corners[edge + 1].
+struct EdgeRef {
+  uint32_t element = 0;
+  uint32_t edge = 0;
+  bool operator==(const EdgeRef& o) const { return element == o.element && edge == o.edge; }
+};
+
+// An edge as the interpolants see it.
+struct EdgeDescription {
+  EdgeRef ref;
+  uint32_t a = 0, b = 0;                   // its end nodes on ref's side
+  std::vector<EdgeRef> sides;              // every element side of it, ref's among them; 1 on a boundary
+  Continuity continuity = Continuity::C1;  // its tag, or C-1 where its sides have their own nodes
+  bool ownNodes = false;                   // the sides do not share their end nodes
+};
+
+EdgeDescription describeEdge(const RadiosityMesh& mesh, const MeshTopology& topology, EdgeRef ref);
+
+// C1 -> C0 -> C-1 -> C1: what a click on an edge does.
+Continuity nextContinuity(Continuity c);
+
+// Tags the edge `order` (C1 takes the tag away) and splits or merges the nodes at its ends (and
+// its mid-edge nodes) to match. Throws Error, leaving the mesh as it was, for an edge out of
+// range, or when the edge stops being C-1 but its sides carry different radiosities at a node
+// (joining them would change the solution: the tag stays).
+void setEdgeContinuity(RadiosityMesh& mesh, EdgeRef ref, Continuity order);
+
+// Retagging with undo. Each change is one step (a drag across several edges is one change);
+// undo sets every edge of the last change back to the continuity it had.
+class ContinuityEditor {
+ public:
+  // Advances each edge's continuity one step (nextContinuity). Edges that cannot change (see
+  // setEdgeContinuity) are left; the first reason is returned, the rest are retagged.
+  std::optional<std::string> cycle(RadiosityMesh& mesh, const std::vector<EdgeRef>& edges);
+  // Undoes the last change; false when there is none.
+  bool undo(RadiosityMesh& mesh);
+  size_t steps() const { return history_.size(); }
+  void clear() { history_.clear(); }
+
+ private:
+  struct Retag {
+    EdgeRef edge;
+    Continuity before;
+  };
+  std::vector<std::vector<Retag>> history_;
+};
+
+}  // namespace radview
