@@ -26,7 +26,8 @@ const std::vector<Example>& bundledExamples() {
        "two coarse quads beside eight fine ones: Gouraud's shading seam at the T-vertices; B repairs it",
        Method::Gouraud, true, false, true},
       {"discontinuities.gltf", "C0 and C-1 edges",
-       "Clough-Tocher keeps the kink (C0) and the jump (C-1) the tags ask for; Gouraud (2) smooths neither",
+       "Clough-Tocher, smooth everywhere but across the edges tagged C0 (a kink) and C-1 (a step); H lifts "
+       "the radiosity surface to show them",
        Method::CloughTocher, false, true},
   };
   return examples;

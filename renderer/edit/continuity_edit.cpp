@@ -50,10 +50,12 @@ struct DisjointSets {
 };
 
 // After the edge between `here` and `there` became C-1: the corners that use `node` are joined
-// across every edge at it that both sides' corners share it on and that is not tagged C-1; if
-// that leaves `there`'s corner apart from `here`'s, its part gets a copy of the node. Only a
-// part the edited edge alone held together is split off: corners already apart stay as they are.
-void splitWhereSeparated(RadiosityMesh& mesh, const MeshTopology& topology, uint32_t node, EdgeRef here, EdgeRef there,
+// across every edge at it, not tagged C-1, along which their elements meet: edges leaving the
+// node in the same direction, so that an element's long edge meets its neighbours' short ones
+// through a T-vertex as the interpolants' triangulation has them meet. If that leaves
+// `there`'s corner apart from `here`'s, its part gets a copy of the node. Only a part the
+// edited edge alone held together is split off: corners already apart stay as they are.
+void splitWhereSeparated(RadiosityMesh& mesh, uint32_t node, EdgeRef here, EdgeRef there,
                          const std::vector<std::vector<bool>>& cm1Tagged) {
   struct Corner {
     uint32_t element, index;
@@ -66,30 +68,39 @@ void splitWhereSeparated(RadiosityMesh& mesh, const MeshTopology& topology, uint
         cornerIndex[{e, i}] = corners.size();
         corners.push_back({e, i});
       }
+  // A corner's two edges at the node: (edge index, unit direction away from the node).
+  const Vec3 at = mesh.nodes[node].position;
+  auto edgesAt = [&](const Corner& c) {
+    const Element& element = mesh.elements[c.element];
+    const uint32_t n = uint32_t(element.corners.size()), previous = (c.index + n - 1) % n;
+    auto away = [&](uint32_t other) {
+      const Vec3 d = mesh.nodes[other].position - at;
+      const double length = glm::length(d);
+      return length > 0.0 ? d / length : Vec3(0.0);
+    };
+    return std::array<std::pair<uint32_t, Vec3>, 2>{
+        {{c.index, away(element.corners[(c.index + 1) % n])}, {previous, away(element.corners[previous])}}};
+  };
   auto tagged = [&](uint32_t element, uint32_t edge) {
     return edge < cm1Tagged[element].size() && cm1Tagged[element][edge];
   };
-  // Joins the corners at `node` of the sides of every untagged edge at it, the edited one
-  // included only when `withEdited`.
+  auto isEdited = [&](uint32_t element, uint32_t edge) {
+    return (element == here.element && edge == here.edge) || (element == there.element && edge == there.edge);
+  };
+  // Joins the corners whose elements meet along an untagged edge at the node, the edited one
+  // counted only when `withEdited`.
   auto parts = [&](bool withEdited) {
     DisjointSets sets(corners.size());
-    for (const Corner& c : corners) {
-      const Element& element = mesh.elements[c.element];
-      const uint32_t n = uint32_t(element.corners.size());
-      for (uint32_t edge : {c.index, (c.index + n - 1) % n}) {
-        const bool isEdited =
-            (c.element == here.element && edge == here.edge) || (c.element == there.element && edge == there.edge);
-        if (isEdited ? !withEdited : tagged(c.element, edge)) continue;
-        const MeshEdge& e = topology.edges()[topology.edgeIndex(c.element, edge)];
-        for (const EdgeSide& s : topology.sides(e)) {
-          const Element& other = mesh.elements[s.element];
-          for (uint32_t k : {s.edge, (s.edge + 1) % uint32_t(other.corners.size())}) {
-            auto it = cornerIndex.find({s.element, k});
-            if (it != cornerIndex.end()) sets.join(cornerIndex.at({c.element, c.index}), it->second);
+    for (size_t i = 0; i < corners.size(); ++i)
+      for (size_t j = i + 1; j < corners.size(); ++j)
+        for (const auto& [ei, di] : edgesAt(corners[i]))
+          for (const auto& [ej, dj] : edgesAt(corners[j])) {
+            if (glm::dot(di, dj) < 1.0 - 1e-9) continue;
+            const uint32_t a = corners[i].element, b = corners[j].element;
+            const bool edited = isEdited(a, ei) || isEdited(b, ej);
+            if (edited ? !withEdited : tagged(a, ei) || tagged(b, ej)) continue;
+            sets.join(i, j);
           }
-        }
-      }
-    }
     return sets;
   };
   DisjointSets with = parts(true), without = parts(false);
@@ -186,7 +197,7 @@ void setEdgeContinuity(RadiosityMesh& mesh, EdgeRef ref, Continuity order) {
             cm1Tagged[s.element][s.edge] = true;
           }
         }
-      for (uint32_t node : {was.a, was.b}) splitWhereSeparated(mesh, topology, node, ref, other, cm1Tagged);
+      for (uint32_t node : {was.a, was.b}) splitWhereSeparated(mesh, node, ref, other, cm1Tagged);
       if (quadratic && here.midEdge[ref.edge] == there.midEdge[other.edge]) {
         mesh.elements[other.element].midEdge[other.edge] = uint32_t(mesh.nodes.size());
         mesh.nodes.push_back(mesh.nodes[here.midEdge[ref.edge]]);

@@ -161,6 +161,25 @@ TEST(ContinuityEdit, ASingleCm1EdgeInsideKeepsItsSharedNodes) {
   EXPECT_FALSE(d.ownNodes);
 }
 
+TEST(ContinuityEdit, ElementsMeetingThroughATVertexStayJoinedAtTheirNode) {
+  // t_vertices.gltf: the fine quads' edge (0.5, 0.5)-(0.75, 0.5) made C-1. Around (0.5, 0.5) the
+  // coarse quads' long edges meet the fine quads' short ones through the T-vertices, so the
+  // elements there still go round the node: nothing is cut apart, no node is split.
+  RadiosityMesh mesh = loadFile(RADVIEW_SOURCE_DIR "/assets/t_vertices.gltf").mesh;
+  const size_t nodes = mesh.nodes.size();
+  std::optional<EdgeRef> edge;
+  for (uint32_t e = 0; e < mesh.elements.size() && !edge; ++e)
+    for (uint32_t k = 0; k < mesh.elements[e].corners.size(); ++k) {
+      const Vec3 a = mesh.nodes[mesh.elements[e].corners[k]].position;
+      const Vec3 b = mesh.nodes[mesh.elements[e].corners[(k + 1) % mesh.elements[e].corners.size()]].position;
+      if (std::min(a.x, b.x) == 0.5 && std::max(a.x, b.x) == 0.75 && a.y == 0.5 && b.y == 0.5) edge = EdgeRef{e, k};
+    }
+  ASSERT_TRUE(edge.has_value());
+  setEdgeContinuity(mesh, *edge, Continuity::Cm1);
+  EXPECT_EQ(mesh.nodes.size(), nodes);
+  EXPECT_EQ(describeEdge(mesh, MeshTopology(mesh), *edge).continuity, Continuity::Cm1);
+}
+
 TEST(ContinuityEdit, JoiningSidesWithDifferentRadiositiesIsRefusedAndChangesNothing) {
   RadiosityMesh mesh = gridMesh();
   const std::vector<EdgeRef> line = middleLine(mesh);

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
         colours.insert(p[0] << 16 | p[1] << 8 | p[2]);
         if (isRed(p)) ++red;
         if (isGreen(p)) ++green;  // olive under the warm light
-        if (x < panel + 8 && (isRed(p) || isGreen(p))) ++atPanelEdge;
+        if (x < panel + 3 && (isRed(p) || isGreen(p))) ++atPanelEdge;
       }
     // Panel text: near-white pixels inside the panel's corner (ImGui draws text at ~(230,230,230)).
     for (int y = 10; y < 200 && y < image.height; ++y)

@@ -8,7 +8,7 @@ if [[ "${1:-}" == --drive ]]; then
   radview=$2 dropper=$3 first=$4 dropped=$5
   "$radview" "$first" --size 1000x700 >viewer.log 2>&1 &
   viewer=$!
-  window=$(xdotool search --sync --onlyvisible --name radview | head -1) || exit 1
+  window=$(timeout 30 xdotool search --sync --onlyvisible --name radview | head -1) || exit 1
   xdotool windowfocus --sync "$window"
   sleep 1
   "$dropper" "$window" "$dropped" || { kill $viewer; exit 1; }
@@ -24,7 +24,8 @@ if [[ "${1:-}" == --drive ]]; then
   echo "ok: the dropped $(basename "$dropped") was opened and written as $written"
   exit
 fi
-radview=$1 dropper=$2 first=$3 dropped=$4 out_dir=$5
+radview=$(readlink -f "$1") dropper=$(readlink -f "$2") first=$(readlink -f "$3") dropped=$(readlink -f "$4")
+out_dir=$5
 work="$out_dir/viewer-drop"
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 xvfb-run -a -s "-screen 0 1400x900x24" "$self" --drive "$radview" "$dropper" "$first" "$dropped"

@@ -11,6 +11,6 @@ out="$out_dir/$name.png"
 rm -f "$out"
 files=("$file")
 [[ "$file" == - ]] && files=()
-xvfb-run -a -s "-screen 0 1400x900x24" "$radview" "${files[@]}" --size 1400x800 --screenshot "$out" "$@" \
+xvfb-run -a -s "-screen 0 1400x900x24" "$radview" "${files[@]}" --size "${RADVIEW_WINDOW_SIZE:-1400x800}" --screenshot "$out" "$@" \
   || { echo "the viewer failed under Xvfb"; exit 1; }
 "$checker" "$out"
