@@ -10,9 +10,10 @@ BackgroundOpen::~BackgroundOpen() {
   if (worker_.joinable()) worker_.join();
 }
 
-void BackgroundOpen::start(const std::string& path, double elementSize) {
+void BackgroundOpen::start(const std::string& path, double elementSize, const ImportOptions& import) {
   std::unique_lock<std::mutex> lock(mutex_);
   elementSize_ = elementSize;
+  import_ = import;
   if (busy_) {
     pending_ = path;
     return;
@@ -28,11 +29,11 @@ void BackgroundOpen::launch(const std::string& path) {
   path_ = path;
   finished_.reset();
   started_ = std::chrono::steady_clock::now();
-  worker_ = std::thread([this, path, elementSize = elementSize_] {
+  worker_ = std::thread([this, path, elementSize = elementSize_, import = import_] {
     Result result;
     result.path = path;
     try {
-      result.viewed = openForViewing(path, elementSize);
+      result.viewed = openForViewing(path, elementSize, import);
       result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false);
     } catch (const std::exception& e) {
       result.error = e.what();

@@ -24,7 +24,8 @@ class BackgroundOpen {
 
   // Starts opening `path`. Asked while another opening is under way, the newer request wins:
   // it starts when that one ends, whose result is dropped.
-  void start(const std::string& path, double elementSize);
+  // `import` says how other tools' meshes are read (the viewer's --colours, --read-as, ...).
+  void start(const std::string& path, double elementSize, const ImportOptions& import = {});
   bool running() const;
 
   struct Result {
@@ -42,6 +43,7 @@ class BackgroundOpen {
   void launch(const std::string& path);
 
   double elementSize_ = 0.0;
+  ImportOptions import_;
   std::thread worker_;
   mutable std::mutex mutex_;  // guards the fields below
   bool busy_ = false;

@@ -1,6 +1,7 @@
 #include "app/command_bench.h"
 
 #include "app/commands.h"
+#include "app/import_flags.h"
 #include "app/method_choice.h"
 #include "app/viewed_file.h"
 #include "bench/bench_variants.h"
@@ -55,6 +56,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
                          "Measure every method and setting on one view: GPU frame time, triangles, error against the "
                          "per-pixel final gather, Mach bands; writes a Markdown table, CSV and a plot");
   command->add_option("file", o.file, "A solution file, or a scene (meshed and lit directly)")->required();
+  addImportOptions(*command, o.import);
   command->add_option("--camera", o.camera, "As render --camera");
   command->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--exposure", o.exposure, "Exposure in stops")->capture_default_str();
@@ -103,7 +105,8 @@ int runBench(const BenchOptions& options) {
   std::filesystem::create_directories(options.outDir, ec);
   if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
+  checkFinalGatherRuns(viewed);  // the reference of every row
   const RadiosityMesh& mesh = viewed.mesh;
   const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
   const double exposureScale = std::exp2(options.exposure);

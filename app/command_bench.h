@@ -1,6 +1,8 @@
 #pragma once
 // radview bench: the speed-versus-accuracy trade of every method and setting on one view of a
 // file, against the per-pixel final gather (C&W §9.3.1) as the reference.
+#include "import/import_options.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -22,6 +24,7 @@ struct BenchOptions {
   double maxTrianglesPerPixel = 16.0;
   std::string outDir = "bench";
   double elementSize = 0.0;  // scenes only
+  ImportOptions import;      // other tools' meshes
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);

@@ -51,7 +51,7 @@ void printMesh(const RadiosityMesh& mesh) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
   const LoadedFile& file = viewed.file;
   std::cout << "file: " << file.path << (file.isSolution ? " (radiosity solution)" : " (scene)") << '\n';
   if (!file.isSolution) {
@@ -75,6 +75,8 @@ int runInfo(const InfoOptions& options) {
     for (const Material& m : viewed.mesh.materials) std::cout << "  " << m << '\n';
     std::cout << "cameras: " << file.scene.cameras.size() << '\n';
     std::cout << "bounds: " << viewed.mesh.bounds() << '\n';
+    if (!file.valueSource.empty()) std::cout << "B from: " << file.valueSource << '\n';
+    if (!file.gatherRefusal.empty()) std::cout << "final gather: not available (" << file.gatherRefusal << ")\n";
   }
   printMesh(viewed.mesh);
   for (const std::string& w : file.warnings) std::cout << "warning: " << w << '\n';

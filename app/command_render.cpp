@@ -121,7 +121,7 @@ int runRender(const RenderOptions& options) {
     checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
   else
     checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");
-  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
+  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   if (options.display.method == kFinalGather)
     renderFinalGather(viewed, options.display, options.gather, width, height, options.out, options.linearOut);

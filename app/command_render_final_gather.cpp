@@ -57,6 +57,7 @@ void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, 
   const std::string glOnly = glOnlyOptionGiven(display);
   if (!glOnly.empty()) throw Error(glOnly + ": a GL display option, not available with --method final-gather");
   checkGatherOptions(options);
+  checkFinalGatherRuns(viewed);
 
   GatherSettings settings;
   settings.interpolant = methodFromName(options.interpolant);

@@ -117,7 +117,7 @@ int runSample(const SampleOptions& options) {
   interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
   interpolantOptions.useStoredGradients = !options.estimateGradients;
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
   const RadiosityMesh& mesh = viewed.mesh;
   if (methodInfo(method).viewDependent) {
     int width = 0, height = 0;

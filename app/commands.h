@@ -3,6 +3,7 @@
 // function that returns the exit status. Errors are thrown as radview::Error.
 #include "core/limits.h"
 #include "gl/mesh_renderer.h"
+#include "import/import_options.h"
 
 #include <cstdint>
 #include <string>
@@ -47,6 +48,7 @@ struct RenderOptions {
   std::string out = "radview.png";
   std::string size = "1024x768";
   std::string linearOut;  // also write the linear radiosity (e.g. .exr), usable as a reference
+  ImportOptions import;
   DisplayOptions display;
   GatherOptions gather;
 };
@@ -54,6 +56,16 @@ struct RenderOptions {
 struct InfoOptions {
   std::string file;
   double elementSize = 0.0;
+  ImportOptions import;
+};
+
+// export: a solution (or a scene, meshed and lit as the viewer shows it) to PLY or to a radview
+// solution file, by the output's extension.
+struct ExportOptions {
+  std::string file;
+  std::string out;
+  double elementSize = 0.0;
+  ImportOptions import;
 };
 
 struct SampleOptions {
@@ -69,6 +81,7 @@ struct SampleOptions {
   bool estimateGradients = false;      // ignore gradients stored in the file
   double maxDistance = -1.0;           // world points farther from every element are errors
   double elementSize = 0.0;
+  ImportOptions import;
 };
 
 struct ViewerOptions {
@@ -77,6 +90,7 @@ struct ViewerOptions {
   std::string screenshot;
   std::string size = "1280x800";
   bool solve = false;  // start solving the scene in the background at once
+  ImportOptions import;
   DisplayOptions display;
   GatherOptions gather = viewerGather();  // the final gather in the window ('9', --method final-gather)
   bool framesWaitForSpp = false;          // --spp given: the last of --frames waits for the gather to reach it
@@ -96,6 +110,7 @@ int runRender(const RenderOptions& options);
 Image displayedGather(const LinearImage& linear, double exposureScale);
 int runInfo(const InfoOptions& options);
 int runSample(const SampleOptions& options);
+int runExport(const ExportOptions& options);
 // Opens the window; where no display exists, renders headless to a PNG instead (unless a
 // window was explicitly asked for with --frames/--screenshot) and prints its path.
 int runViewer(const ViewerOptions& options);

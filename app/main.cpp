@@ -4,6 +4,7 @@
 #include "app/command_solve.h"
 #include "app/commands.h"
 #include "app/examples.h"
+#include "app/import_flags.h"
 #include "app/method_choice.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
@@ -22,6 +23,10 @@
 namespace {
 
 using namespace radview;
+
+constexpr const char* kFileHelp =
+    "A glTF scene (.gltf/.glb), a radview solution file, or another tool's mesh with vertex colours "
+    "(.ply, .obj, glTF with COLOR_0, ...)";
 
 // `methods`: the --method names the command accepts.
 void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
@@ -132,7 +137,8 @@ int main(int argc, char** argv) {
       [](const CLI::App*, const CLI::Error& e) { return std::string("radview: ") + e.what() + " (see --help)\n"; });
 
   ViewerOptions viewer;
-  app.add_option("file", viewer.file, "A glTF scene (.gltf/.glb) or a radview solution file");
+  app.add_option("file", viewer.file, kFileHelp);
+  addImportOptions(app, viewer.import);
   app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
@@ -148,7 +154,8 @@ int main(int argc, char** argv) {
 
   RenderOptions render;
   CLI::App* renderCommand = app.add_subcommand("render", "Render FILE headless (EGL) to a PNG");
-  renderCommand->add_option("file", render.file, "A glTF scene or radview solution file")->required();
+  renderCommand->add_option("file", render.file, kFileHelp)->required();
+  addImportOptions(*renderCommand, render.import);
   renderCommand->add_option("--out,-o", render.out, "Output PNG")->capture_default_str();
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   renderCommand->add_option("--linear-out", render.linearOut,
@@ -160,7 +167,8 @@ int main(int argc, char** argv) {
   CLI::App* infoCommand = app.add_subcommand("info",
                                              "Print what FILE holds: polygons, emitters, mesh, T-vertices, "
                                              "discontinuity edges, bounds");
-  infoCommand->add_option("file", info.file, "A glTF scene or radview solution file")->required();
+  infoCommand->add_option("file", info.file, kFileHelp)->required();
+  addImportOptions(*infoCommand, info.import);
   infoCommand
       ->add_option("--element-size", info.elementSize, "Scenes: element size of the uniform mesh that is reported")
       ->check(CLI::Range(1e-12, 1e12));
@@ -168,7 +176,8 @@ int main(int argc, char** argv) {
   SampleOptions sample;
   CLI::App* sampleCommand = app.add_subcommand(
       "sample", "Print the reconstructed radiosity B and its surface gradient at points (CPU reference)");
-  sampleCommand->add_option("file", sample.file, "A glTF scene or radview solution file")->required();
+  sampleCommand->add_option("file", sample.file, kFileHelp)->required();
+  addImportOptions(*sampleCommand, sample.import);
   sampleCommand->add_option("--method", sample.method, methodHelp())
       ->check(methodChoice(methodNames()))
       ->capture_default_str();
@@ -200,6 +209,18 @@ int main(int argc, char** argv) {
   sampleCommand->add_option("--element-size", sample.elementSize, "Scenes: element size of the uniform mesh")
       ->check(CLI::Range(1e-12, 1e12));
 
+  ExportOptions exportOptions;
+  CLI::App* exportCommand = app.add_subcommand(
+      "export",
+      "Write FILE's radiosity mesh as PLY (.ply: for MeshLab, CloudCompare, Blender) or as a radview "
+      "solution file (.glb/.gltf), by OUT's extension");
+  exportCommand->add_option("file", exportOptions.file, kFileHelp)->required();
+  exportCommand->add_option("out", exportOptions.out, "The file to write: .ply, .glb or .gltf")->required();
+  exportCommand
+      ->add_option("--element-size", exportOptions.elementSize, "Scenes: element size of the uniform mesh written")
+      ->check(CLI::Range(1e-12, 1e12));
+  addImportOptions(*exportCommand, exportOptions.import);
+
   SolveOptions solve;
   CLI::App* solveCommand = addSolveCommand(app, solve);
   BenchOptions bench;
@@ -214,6 +235,7 @@ int main(int argc, char** argv) {
     if (*renderCommand) return runRender(render);
     if (*infoCommand) return runInfo(info);
     if (*sampleCommand) return runSample(sample);
+    if (*exportCommand) return runExport(exportOptions);
     if (*solveCommand) return runSolve(solve);
     if (*benchCommand) return runBench(bench);
     if (viewer.file.empty()) viewer.file = examplePath(bundledExamples().front());

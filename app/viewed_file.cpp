@@ -8,9 +8,9 @@
 
 namespace radview {
 
-ViewedFile openForViewing(const std::string& path, double elementSize) {
+ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import) {
   ViewedFile viewed;
-  viewed.file = loadFile(path);
+  viewed.file = loadFile(path, import);
   // Meshing, lighting and topology report problems without knowing the file: name it here,
   // so every error the user sees says which file it is about.
   try {
@@ -27,6 +27,12 @@ ViewedFile openForViewing(const std::string& path, double elementSize) {
     throw what.rfind(path + ": ", 0) == 0 ? e : Error(path, what);
   }
   return viewed;
+}
+
+void checkFinalGatherRuns(const ViewedFile& viewed) {
+  if (!viewed.file.gatherRefusal.empty())
+    throw Error(viewed.file.path, "the final gather cannot run: " + viewed.file.gatherRefusal +
+                                      "; the interpolants work on it (--method gouraud, clough-tocher, ...)");
 }
 
 }  // namespace radview

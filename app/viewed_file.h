@@ -15,7 +15,13 @@ struct ViewedFile {
   size_t tVertexCount = 0;
 };
 
-// elementSize <= 0 picks defaultElementSize(scene). Throws Error.
-ViewedFile openForViewing(const std::string& path, double elementSize);
+// elementSize <= 0 picks defaultElementSize(scene); `import` says how another tool's mesh is
+// read (mesh/load_file.h). Throws Error.
+ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import = {});
+
+// The final gather (eq. 9.9) integrates rho times the radiosity around each point seen and adds
+// the emitters' E: a mesh imported without them (a PLY's colours alone) cannot be gathered.
+// Throws Error(path, why) then.
+void checkFinalGatherRuns(const ViewedFile& viewed);
 
 }  // namespace radview

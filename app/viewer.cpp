@@ -182,12 +182,12 @@ struct ViewerWork {
   // A dropped file or the panel's Open, loaded and prepared in the background. All or
   // nothing: the previous file stays on screen and in the panel unless the new one both loads
   // and uploads.
-  void handleOpen(ViewerState& state, ViewerInput& input, double elementSize) {
+  void handleOpen(ViewerState& state, ViewerInput& input, double elementSize, const ImportOptions& import) {
     if (!input.droppedPath.empty() || state.openRequested) {
       const std::string path = input.droppedPath.empty() ? state.pathToOpen : input.droppedPath;
       input.droppedPath.clear();
       state.openRequested = false;
-      opener.start(path, elementSize);
+      opener.start(path, elementSize, import);
     }
     if (opener.running()) state.status = opener.status();
     if (std::optional<BackgroundOpen::Result> opened = opener.take()) {
@@ -250,6 +250,10 @@ struct ViewerWork {
     try {
       fitClipPlanes(state.camera, state.viewed.mesh.bounds());
       const Camera framed = framedFor(state.camera, double(width) / height);
+      if (state.gather.on && !state.viewed.file.gatherRefusal.empty()) {
+        state.gather.on = false;
+        checkFinalGatherRuns(state.viewed);
+      }
       gather.update(state.gather, state.viewed.mesh, meshVersion, framed, width, height, renderer, waitForSpp);
       const gl::RenderSettings drawn =
           piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
@@ -329,7 +333,8 @@ int runViewer(const ViewerOptions& options) {
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
   checkGatherOptions(options.gather);
 
-  ViewedFile viewed = openForViewing(options.file, options.display.elementSize);
+  ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import);
+  if (options.display.method == kFinalGather) checkFinalGatherRuns(viewed);
 
   glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
   if (!glfwInit()) {
@@ -390,7 +395,7 @@ int runViewer(const ViewerOptions& options) {
     const bool lastFrame = options.frames > 0 && frame >= options.frames;
     glfwPollEvents();
     handleDrag(window, input);
-    work.handleOpen(state, input, options.display.elementSize);
+    work.handleOpen(state, input, options.display.elementSize, options.import);
     work.handleSolve(state);
     handleWriteSolution(state);
     work.handleReference(state);

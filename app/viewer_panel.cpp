@@ -45,7 +45,8 @@ const std::string& shortcutHelp() {
            "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder),\n"
            "K edit continuity (click or drag across edges: C1 -> C0 -> C-1), Ctrl+Z undo, Ctrl+S write the solution,\n"
            "Tab hide or show the panel, Esc quit.\n"
-           "Mouse: left drag orbit, right or middle drag pan, wheel zoom. Drop a .gltf/.glb file on the window to "
+           "Mouse: left drag orbit, right or middle drag pan, wheel zoom. Drop a .gltf, .glb, .ply or .obj file on the "
+           "window to "
            "open it.";
   }();
   return help;
@@ -241,6 +242,12 @@ void drawPanel(ViewerState& state) {
                       : state.solveStatus.empty() ? "scene (direct light)"
                                                   : "scene (radiosity solve)";
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
+  if (!viewed.file.valueSource.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("B from %s", viewed.file.valueSource.c_str());
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("--colours linear|srgb reads the values the other way");
+  }
   drawExamples(state);
 
   section("Interpolant (C&W 9.2)");
@@ -364,7 +371,7 @@ void drawPanel(ViewerState& state) {
   if (ImGui::InputText("##path", buffer, sizeof buffer)) state.pathToOpen = buffer;
   ImGui::SameLine();
   if (ImGui::Button("Open")) state.openRequested = true;
-  ImGui::TextDisabled("or drop a .gltf / .glb on the window");
+  ImGui::TextDisabled("or drop a .gltf, .glb, .ply or .obj on the window");
 
   section("Frame");
   ImGui::Text("GPU %.2f ms   CPU %.2f ms", state.gpuFrameMs, state.cpuFrameMs);

@@ -14,6 +14,12 @@ inline double srgbEncode(double v) {
   return v < 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
 }
 
+// The inverse: a display value in [0, 1] (an 8-bit colour / 255) back to linear.
+inline double srgbDecode(double v) {
+  v = std::clamp(v, 0.0, 1.0);
+  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+}
+
 inline Rgb displayed(const Rgb& B, double exposureScale) {
   return {srgbEncode(B.r * exposureScale), srgbEncode(B.g * exposureScale), srgbEncode(B.b * exposureScale)};
 }

@@ -56,6 +56,13 @@ inline constexpr size_t kMaxElementCorners = 1024;
 // Discontinuity edges of a solution file: each is two nodes; a mesh at kMaxSolutionNodes with
 // every node on one edge has fewer.
 inline constexpr size_t kMaxDiscontinuityEdges = kMaxSolutionNodes;
+// Entries of one element of a PLY file (its vertices, faces, edges, or any other element, all of
+// which are read): the solution file's node limit, so that what radview reads it can write.
+inline constexpr size_t kMaxPlyEntries = kMaxSolutionNodes;
+// Items of one PLY list property over all its entries (the corners of every face): the corners
+// of kMaxSolutionElements quads, 256 MiB as doubles. A file's bytes bound them too, but a
+// 2 GiB file of one-byte items would decode into 16 GiB.
+inline constexpr size_t kMaxPlyListItems = 4 * kMaxSolutionElements;
 // Merged discontinuity segments per polygon in discontinuity meshing: the arrangement is
 // quadratic in them and each adds elements. Past it the strongest orders are kept (C-1, then
 // C0, then C1), longer first within an order; the rest are dropped and counted.

@@ -1,6 +1,7 @@
 #include "scene/gltf_document.h"
 
 #include "core/error.h"
+#include "core/input_file.h"
 #include "core/limits.h"
 #include "core/strings.h"
 
@@ -388,19 +389,10 @@ class AccessorReader {
 }  // namespace
 
 GltfDocument::GltfDocument(const std::string& path) : path_(path), model_(std::make_unique<tinygltf::Model>()) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec && ec != std::errc::no_such_file_or_directory) throw Error(path, ec.message());
-  if (!fs::exists(status)) throw Error(path, "no such file");
-  if (fs::is_directory(status)) throw Error(path, "is a directory, not a glTF file");
-  if (!fs::is_regular_file(status)) throw Error(path, "is not a regular file");
+  checkInputFile(path, "a glTF file");
   const std::string ext = lowerExtension(path);
   if (ext != ".gltf" && ext != ".glb")
     throw Error(path, "unknown file type \"" + ext + "\" (radview reads .gltf and .glb)");
-  const uintmax_t size = fs::file_size(path, ec);
-  if (ec) throw Error(path, "cannot read the file size: " + ec.message());
-  if (size == 0) throw Error(path, "the file is empty");
-  checkLimit(path, size, kMaxFileBytes, "bytes");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skipImage, nullptr);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 
 namespace radview {
 
@@ -54,8 +55,13 @@ bool degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
 
 class SceneImporter {
  public:
-  SceneImporter(const GltfDocument& document, std::vector<std::string>& warnings)
-      : doc_(document), model_(document.model()), warnings_(warnings) {}
+  SceneImporter(const GltfDocument& document, std::vector<std::string>& warnings, const PrimitiveVisitor& visit = {},
+                bool colourModulatesRho = true)
+      : doc_(document),
+        model_(document.model()),
+        warnings_(warnings),
+        visit_(visit),
+        colourModulatesRho_(colourModulatesRho) {}
 
   // The cameras alone, for a file whose meshes are read another way (a solution file).
   std::vector<SceneCamera> cameras() {
@@ -239,6 +245,9 @@ class SceneImporter {
     // vertices turns them back, so polygon normals still point out of the front face.
     const bool mirrored = glm::determinant(glm::dmat3(worldFromMesh)) < 0.0;
     const int material = sceneMaterial(primitive.material, what);
+    const std::vector<Rgb> colours =
+        colourModulatesRho_ ? readVertexColours(doc_, primitive, what, positions.size()) : std::vector<Rgb>{};
+    std::vector<std::array<uint32_t, 3>> triangles;  // for visit_ only
     auto emit = [&](uint32_t a, uint32_t b, uint32_t c) {
       if (mirrored) std::swap(b, c);
       const Vec3 &pa = positions[a], &pb = positions[b], &pc = positions[c];
@@ -249,7 +258,10 @@ class SceneImporter {
       if (scene_.polygons.size() >= kMaxSceneTriangles)
         fail("more than " + std::to_string(kMaxSceneTriangles) +
              " triangles after instancing; radview does not mesh scenes that large");
-      scene_.polygons.push_back({{pa, pb, pc}, material});
+      const int triangleMaterial =
+          colours.empty() ? material : modulatedMaterial(material, (colours[a] + colours[b] + colours[c]) / 3.0);
+      scene_.polygons.push_back({{pa, pb, pc}, triangleMaterial});
+      if (visit_) triangles.push_back({a, b, c});
     };
     // The spec ("Meshes") gives the vertex order of each triangle of a strip and a fan.
     const size_t n = indices.size();
@@ -263,6 +275,7 @@ class SceneImporter {
     } else {
       for (size_t i = 0; i + 2 < n; ++i) emit(indices[i + 1], indices[i + 2], indices[0]);
     }
+    if (visit_) visit_({primitive, what, positions, triangles, material});
   }
 
   // The scene material of glTF material `index` (-1: the spec's default material), converted
@@ -281,6 +294,21 @@ class SceneImporter {
     }
     scene_.materials.push_back(material);
     return materialOf_[index] = int(scene_.materials.size()) - 1;
+  }
+
+  // Scene material `material` with its rho times `colour`, made once per material and 8-bit
+  // colour (finer steps than that would multiply materials without a visible difference).
+  int modulatedMaterial(int material, const Rgb& colour) {
+    const glm::ivec3 step = glm::ivec3(glm::round(glm::clamp(colour, 0.0, 1.0) * 255.0));
+    const auto key = std::make_tuple(material, step.r, step.g, step.b);
+    const auto known = modulated_.find(key);
+    if (known != modulated_.end()) return known->second;
+    Material m = scene_.materials[size_t(material)];
+    m.rho *= Rgb(step) / 255.0;
+    m.name += " x COLOR_0";
+    scene_.materials.push_back(m);
+    ++colouredTriangleMaterials_;
+    return modulated_[key] = int(scene_.materials.size()) - 1;
   }
 
   Material convertMaterial(int index) {
@@ -345,6 +373,8 @@ class SceneImporter {
     warnIf(tooFewVertices_, "triangle primitive(s) with fewer than 3 vertices skipped");
     warnIf(ragged_, "TRIANGLES primitive(s) with a vertex count not a multiple of 3: the extra vertices ignored");
     warnIf(degenerateTriangles_, "degenerate (zero-area) triangle(s) dropped");
+    warnIf(colouredTriangleMaterials_,
+           "material(s) made for COLOR_0: each triangle's rho is its material's times its corners' mean COLOR_0");
     warnIf(clampedMaterials_, "material(s) with a colour factor outside [0,1], clamped");
     warnIf(ignoredCameras_, "orthographic or degenerate camera(s) ignored");
     warnIf(model_.animations.size(), "animation(s) ignored: radview shows the rest pose");
@@ -359,6 +389,10 @@ class SceneImporter {
   const GltfDocument& doc_;
   const tinygltf::Model& model_;
   std::vector<std::string>& warnings_;
+  PrimitiveVisitor visit_;
+  bool colourModulatesRho_ = true;
+  std::map<std::tuple<int, int, int, int>, int> modulated_;  // (material, 8-bit colour) -> scene material
+  size_t colouredTriangleMaterials_ = 0;
   bool withMeshes_ = true;
   Scene scene_;
   std::map<int, int> materialOf_;  // glTF material index (-1: default) -> scene material
@@ -370,8 +404,34 @@ class SceneImporter {
 
 }  // namespace
 
-Scene importScene(const GltfDocument& document, std::vector<std::string>& warnings) {
-  return SceneImporter(document, warnings).run();
+std::vector<Rgb> readVertexColours(const GltfDocument& document, const tinygltf::Primitive& primitive,
+                                   const std::string& what, size_t vertexCount, bool* integer) {
+  const auto colour = primitive.attributes.find("COLOR_0");
+  if (colour == primitive.attributes.end()) return {};
+  const tinygltf::Model& model = document.model();
+  const int accessor = colour->second;
+  const bool vec4 = accessor >= 0 && size_t(accessor) < model.accessors.size() &&
+                    model.accessors[size_t(accessor)].type == TINYGLTF_TYPE_VEC4;
+  const size_t components = vec4 ? 4 : 3;
+  const std::vector<double> values = document.readAccessor(
+      accessor, {what + " COLOR_0", int(components), kFloat | kUnsignedByte | kUnsignedShort, true});
+  const tinygltf::Accessor& stored = model.accessors[size_t(accessor)];
+  const bool isInteger = stored.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT;
+  if (isInteger && !stored.normalized)
+    throw Error(document.path(), what + " COLOR_0: integer colours must be normalized (glTF 2.0, \"Meshes\")");
+  if (integer) *integer = isInteger;
+  if (values.size() != vertexCount * components)
+    throw Error(document.path(), what + " COLOR_0: " + std::to_string(values.size() / components) + " colours for " +
+                                     std::to_string(vertexCount) + " vertices");
+  std::vector<Rgb> colours(vertexCount);
+  for (size_t v = 0; v < vertexCount; ++v)
+    colours[v] = Rgb(values[v * components], values[v * components + 1], values[v * components + 2]);
+  return colours;
+}
+
+Scene importScene(const GltfDocument& document, std::vector<std::string>& warnings, const PrimitiveVisitor& visit,
+                  bool colourModulatesRho) {
+  return SceneImporter(document, warnings, visit, colourModulatesRho).run();
 }
 
 std::vector<SceneCamera> importCameras(const GltfDocument& document, std::vector<std::string>& warnings) {

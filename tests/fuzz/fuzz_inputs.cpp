@@ -2,6 +2,8 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "import/ply_file.h"
+#include "import/ply_mesh.h"
 #include "interp/interpolant.h"
 #include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
@@ -104,6 +106,29 @@ bool openGltfBytes(const uint8_t* data, size_t size) {
       if (bounds.empty()) return true;
       exerciseMesh(meshAndLight(loaded.scene, glm::length(bounds.extent()) / 8.0));
     }
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+bool importMeshBytes(const uint8_t* data, size_t size) {
+  try {
+    if (size >= 3 && std::memcmp(data, "ply", 3) == 0) {
+      const std::vector<char> bytes(data, data + size);
+      exerciseMesh(plyMesh(parsePly(bytes, "input.ply"), "input.ply", {}).mesh);
+      return true;
+    }
+    const fs::path path = privateDirectory() / "input.obj";
+    {
+      std::ofstream file(path, std::ios::binary | std::ios::trunc);
+      file.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+      if (!file) {
+        std::fprintf(stderr, "fuzz: cannot write %s\n", path.c_str());
+        std::abort();
+      }
+    }
+    exerciseMesh(loadFile(path.string()).mesh);
     return true;
   } catch (const Error&) {
     return false;

@@ -18,6 +18,11 @@ namespace radview::fuzz {
 // radview refuses the file.
 bool openGltfBytes(const uint8_t* data, size_t size);
 
+// Bytes as another tool's mesh: starting with "ply", parsed in memory as PLY (import/ply_file.h)
+// and made a mesh (import/ply_mesh.h); otherwise written to a file as .obj and opened through
+// Assimp as loadFile does; then exerciseMesh. Returns false when radview refuses the file.
+bool importMeshBytes(const uint8_t* data, size_t size);
+
 // Decodes a mesh (tests/fuzz/mesh_bytes.h) and, if validateMesh accepts it, exerciseMesh.
 // Returns false when the mesh is refused.
 bool buildMeshBytes(const uint8_t* data, size_t size);

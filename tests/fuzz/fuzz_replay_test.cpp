@@ -49,6 +49,25 @@ TEST(FuzzRegressions, GltfInputsThatOnceCrashedAreHandled) { replayRegressions("
 
 TEST(FuzzRegressions, MeshInputsThatOnceCrashedAreHandled) { replayRegressions("mesh", fuzz::buildMeshBytes); }
 
+TEST(FuzzRegressions, ImportInputsThatOnceCrashedAreHandled) { replayRegressions("import", fuzz::importMeshBytes); }
+
+// The importer target's seeds include the shared corpus; its files must take the same way
+// through the target as through loadFile.
+TEST(FuzzSeeds, OtherToolsMeshesTakeTheImporterTarget) {
+  const fs::path corpus = kSource / "../shared/corpus/mesh-colours";
+  if (!fs::is_directory(corpus)) GTEST_SKIP() << "no corpus at " << corpus;
+  for (const char* name : {"trimesh_quadknot.obj", "draco_test_pos_color_big_endian.ply", "trimesh_reference.ply"}) {
+    SCOPED_TRACE(name);
+    const std::vector<uint8_t> bytes = readBytes(corpus / name);
+    EXPECT_TRUE(fuzz::importMeshBytes(bytes.data(), bytes.size()));
+  }
+  for (const char* name : {"trimesh_fuze_ascii.ply", "trimesh_nancolor.obj", "assimp_points.ply"}) {
+    SCOPED_TRACE(name);
+    const std::vector<uint8_t> bytes = readBytes(corpus / name);
+    EXPECT_FALSE(fuzz::importMeshBytes(bytes.data(), bytes.size()));
+  }
+}
+
 TEST(FuzzSeeds, BundledFilesOpenThroughTheGltfTargetAndBadOnesAreRefused) {
   for (const fs::path& file : filesIn(kSource / "assets")) {
     if (file.extension() != ".gltf") continue;

@@ -1,0 +1,164 @@
+#include "import/assimp_mesh.h"
+
+#include "core/error.h"
+#include "core/input_file.h"
+#include "core/limits.h"
+#include "core/strings.h"
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <unordered_map>
+
+namespace radview {
+
+namespace {
+
+// A corner's position and colour, bit for bit: equal keys are one node.
+struct CornerKey {
+  float values[6];
+  bool operator==(const CornerKey& o) const { return std::memcmp(values, o.values, sizeof values) == 0; }
+};
+
+struct CornerHash {
+  size_t operator()(const CornerKey& k) const {
+    uint64_t h = 1469598103934665603ull;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(k.values);
+    for (size_t i = 0; i < sizeof k.values; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+    return size_t(h);
+  }
+};
+
+std::string format(const aiVector3D& p) {
+  std::ostringstream text;
+  text << '(' << p.x << ", " << p.y << ", " << p.z << ')';
+  return text.str();
+}
+
+std::string format(const aiColor4D& c) {
+  std::ostringstream text;
+  text << c.r << ' ' << c.g << ' ' << c.b;
+  return text.str();
+}
+
+class AssimpMeshBuilder {
+ public:
+  AssimpMeshBuilder(const aiScene& scene, const std::string& path, const ImportOptions& options)
+      : scene_(scene), path_(path), options_(options) {}
+
+  ImportedMesh build() {
+    if (scene_.mRootNode) walk(*scene_.mRootNode, aiMatrix4x4());
+    if (coloured_ == 0)
+      fail(std::string("no vertex colours") +
+           (withoutColours_ > 0 ? " (" + std::to_string(withoutColours_) + " mesh(es) without them)" : "") +
+           ": radview reads B from per-vertex colours (OBJ: v x y z r g b)");
+    if (withoutColours_ > 0)
+      imported_.warnings.push_back(std::to_string(withoutColours_) + " mesh(es) without vertex colours skipped");
+    if (pointsAndLines_ > 0)
+      imported_.warnings.push_back(std::to_string(pointsAndLines_) + " point or line primitive(s) skipped");
+    imported_.valueSource = "vertex colours (float), " + conversionName(false, options_.colours);
+    imported_.mesh.materials = {unknownMaterial()};
+    finishImportedMesh(imported_, path_);
+    return std::move(imported_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& problem) const { throw Error(path_, problem); }
+
+  // Depth-first with an explicit stack: a deep file cannot overflow ours.
+  void walk(const aiNode& root, const aiMatrix4x4& parent) {
+    std::vector<std::pair<const aiNode*, aiMatrix4x4>> stack{{&root, parent}};
+    while (!stack.empty()) {
+      const auto [node, parentTransform] = stack.back();
+      stack.pop_back();
+      const aiMatrix4x4 transform = parentTransform * node->mTransformation;
+      for (unsigned m = 0; m < node->mNumMeshes; ++m)
+        if (node->mMeshes[m] < scene_.mNumMeshes) addMesh(*scene_.mMeshes[node->mMeshes[m]], transform);
+      for (unsigned c = 0; c < node->mNumChildren; ++c) stack.push_back({node->mChildren[c], transform});
+    }
+  }
+
+  void addMesh(const aiMesh& mesh, const aiMatrix4x4& transform) {
+    if (!mesh.HasVertexColors(0)) {
+      ++withoutColours_;
+      return;
+    }
+    ++coloured_;
+    std::vector<uint32_t> nodeOf(mesh.mNumVertices);
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D p = transform * mesh.mVertices[v];
+      const aiColor4D& c = mesh.mColors[0][v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) fail("a vertex position is not finite");
+      if (!std::isfinite(c.r) || !std::isfinite(c.g) || !std::isfinite(c.b))
+        fail("the vertex at " + format(p) + " has colour " + format(c) + ", not finite numbers");
+      const CornerKey key{{p.x, p.y, p.z, c.r, c.g, c.b}};
+      const auto [at, added] = nodeIndex_.emplace(key, uint32_t(imported_.mesh.nodes.size()));
+      if (added) {
+        checkLimit(path_, imported_.mesh.nodes.size() + 1, kMaxSolutionNodes, "vertices");
+        Node node;
+        node.position = Vec3(p.x, p.y, p.z);
+        node.B = Rgb(linearValue(c.r, 0.0, options_.colours), linearValue(c.g, 0.0, options_.colours),
+                     linearValue(c.b, 0.0, options_.colours));
+        imported_.mesh.nodes.push_back(node);
+      }
+      nodeOf[v] = at->second;
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices < 3) {
+        ++pointsAndLines_;
+        continue;
+      }
+      checkLimit(path_, face.mNumIndices, kMaxElementCorners, "vertices in a face");
+      checkLimit(path_, imported_.mesh.elements.size() + 1, kMaxSolutionElements, "faces");
+      Element element;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= mesh.mNumVertices) fail("a face refers to a vertex that does not exist");
+        element.corners.push_back(nodeOf[face.mIndices[k]]);
+      }
+      std::vector<uint32_t> sorted = element.corners;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+        fail("face " + std::to_string(imported_.mesh.elements.size()) + " uses the vertex at " +
+             format(mesh.mVertices[face.mIndices[0]]) + " or another twice");
+      imported_.mesh.elements.push_back(std::move(element));
+    }
+  }
+
+  const aiScene& scene_;
+  const std::string& path_;
+  const ImportOptions& options_;
+  ImportedMesh imported_;
+  std::unordered_map<CornerKey, uint32_t, CornerHash> nodeIndex_;
+  size_t coloured_ = 0, withoutColours_ = 0, pointsAndLines_ = 0;
+};
+
+}  // namespace
+
+bool assimpReads(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  if (ext.empty() || ext == ".gltf" || ext == ".glb" || ext == ".ply") return false;
+  return Assimp::Importer().IsExtensionSupported(ext);
+}
+
+ImportedMesh readAssimpMesh(const std::string& path, const ImportOptions& options) {
+  checkInputFile(path, "a mesh file");
+  // One importer per thread, kept: making one registers every format Assimp has, which costs
+  // more than reading a small file. ReadFile frees the previous scene.
+  thread_local Assimp::Importer importer;
+  // No post-processing but Assimp's own consistency checks: no triangulation (quads stay
+  // quads), no joining of vertices (done here, by position and colour only).
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  if (!scene) throw Error(path, std::string("Assimp could not read it: ") + oneLine(importer.GetErrorString()));
+  if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) throw Error(path, "Assimp read it only in part (an incomplete scene)");
+  ImportedMesh imported = AssimpMeshBuilder(*scene, path, options).build();
+  importer.FreeScene();
+  return imported;
+}
+
+}  // namespace radview
