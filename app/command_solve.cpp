@@ -96,6 +96,9 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
                    "steps of the tone-mapped, sRGB-encoded luminance")
       ->check(CLI::Range(0.01, 255.0))
       ->capture_default_str();
+  command->add_flag("--balance", o.settings.subdivision.balance,
+                    "2:1 balance: also split elements until neighbours differ by at most one level (no element edge "
+                    "holds more than one T-vertex)");
   command->add_flag("--quadratic", o.settings.solver.quadratic,
                     "Quadratic elements: nodes at the middle of every edge too");
   command->add_flag("--triangulate-t-vertices", o.triangulateTVertices,
@@ -125,6 +128,8 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
 int runSolve(const SolveOptions& options) {
   const auto start = Clock::now();
   LoadedFile file = loadFile(options.file);
+  if (file.isSolution && !file.valueSource.empty())
+    throw Error(options.file, "is a radiosity mesh (B from " + file.valueSource + "); solve takes a glTF scene");
   if (file.isSolution) throw Error(options.file, "is a solution file already; solve takes a scene");
   for (const std::string& w : file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   const Scene& scene = file.scene;
@@ -159,9 +164,10 @@ int runSolve(const SolveOptions& options) {
   std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches, settings.patchSize,
               mesh.elements.size(), settings.solver.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
               topology.tVertices().size());
-  std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements)\n",
+  std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements%s)\n",
               summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,
-              settings.subdivision.minElementSize, settings.subdivision.maxElements);
+              settings.subdivision.minElementSize, settings.subdivision.maxElements,
+              settings.subdivision.balance ? ", 2:1 balanced" : "");
   if (settings.discontinuityMeshing) std::cout << discontinuities << "\n" << std::flush;
   std::printf("discontinuity edges: C-1 %zu, C0 %zu\n", topology.countEdges(Continuity::Cm1),
               topology.countEdges(Continuity::C0));

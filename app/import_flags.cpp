@@ -3,30 +3,49 @@
 #include "core/strings.h"
 
 #include <algorithm>
-#include <map>
 #include <optional>
 #include <string_view>
 #include <vector>
 
 namespace radview {
 
+namespace {
+
+// `text` as one of `choices`, or a CLI error listing them.
+template <class T>
+T choice(const std::string& option, const std::string& text, const std::vector<std::pair<std::string, T>>& choices) {
+  std::string names;
+  for (const auto& [name, value] : choices) {
+    if (name == text) return value;
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  throw CLI::ValidationError(option, "'" + text + "': expected one of " + names);
+}
+
+}  // namespace
+
 void addImportOptions(CLI::App& command, ImportOptions& import) {
-  const std::map<std::string, ColourEncoding> encodings = {
-      {"auto", ColourEncoding::Auto}, {"linear", ColourEncoding::Linear}, {"srgb", ColourEncoding::Srgb}};
-  command
-      .add_option("--colours", import.colours,
-                  "Vertex colours: auto (floats linear, 8/16-bit sRGB-decoded, glTF COLOR_0 linear), "
-                  "linear (all linear) or srgb (all display colours, sRGB-decoded)")
-      ->transform(CLI::CheckedTransformer(encodings))
-      ->default_str("auto");
-  const std::map<std::string, ReadAs> readings = {
-      {"auto", ReadAs::Auto}, {"scene", ReadAs::Scene}, {"solution", ReadAs::Solution}};
-  command
-      .add_option("--read-as", import.readAs,
-                  "glTF with COLOR_0: auto (a radiosity mesh unless a material emits), scene, or solution "
-                  "(B from COLOR_0)")
-      ->transform(CLI::CheckedTransformer(readings))
-      ->default_str("auto");
+  command.add_option_function<std::string>(
+      "--colours",
+      [&import](const std::string& text) {
+        import.colours = choice<ColourEncoding>("--colours", text,
+                                                {{"auto", ColourEncoding::Auto},
+                                                 {"linear", ColourEncoding::Linear},
+                                                 { "srgb",
+                                                   ColourEncoding::Srgb }});
+      },
+      "Vertex colours: auto (floats linear, 8/16-bit sRGB-decoded, glTF COLOR_0 linear; the default), "
+      "linear (all linear) or srgb (all display colours, sRGB-decoded)");
+  command.add_option_function<std::string>(
+      "--read-as",
+      [&import](const std::string& text) {
+        import.readAs = choice<ReadAs>("--read-as", text, {{"auto", ReadAs::Auto}, {"scene", ReadAs::Scene}, {
+                                                             "solution",
+                                                             ReadAs::Solution
+                                                           }});
+      },
+      "glTF with COLOR_0: auto (a radiosity mesh unless a material emits; the default), scene, or solution "
+      "(B from COLOR_0)");
   command.add_option_function<std::string>(
       "--rho",
       [&import](const std::string& text) {

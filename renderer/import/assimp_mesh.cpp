@@ -5,6 +5,7 @@
 #include "core/limits.h"
 #include "core/strings.h"
 
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <assimp/Importer.hpp>
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <unordered_map>
 
@@ -46,12 +49,35 @@ std::string format(const aiColor4D& c) {
   return text.str();
 }
 
+// Whether `path` is an OBJ whose every `mtllib` names a file beside it. Only then are its
+// materials the file's: for a `usemtl` name it cannot find, Assimp makes a material with
+// default colours.
+bool materialLibraryFound(const std::string& path) {
+  if (lowerExtension(path) != ".obj") return false;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool named = false;
+  while (std::getline(in, line)) {
+    const size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, 7, "mtllib ") != 0) continue;
+    std::istringstream names(line.substr(start + 7));
+    for (std::string name; names >> name;) {
+      named = true;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(folder / name, ec)) return false;
+    }
+  }
+  return named;
+}
+
 class AssimpMeshBuilder {
  public:
   AssimpMeshBuilder(const aiScene& scene, const std::string& path, const ImportOptions& options)
-      : scene_(scene), path_(path), options_(options) {}
+      : scene_(scene), path_(path), options_(options), materialsFromFile_(materialLibraryFound(path)) {}
 
   ImportedMesh build() {
+    imported_.mesh.materials = {unknownMaterial()};
     if (scene_.mRootNode) walk(*scene_.mRootNode, aiMatrix4x4());
     if (coloured_ == 0)
       fail(std::string("no vertex colours") +
@@ -62,7 +88,9 @@ class AssimpMeshBuilder {
     if (pointsAndLines_ > 0)
       imported_.warnings.push_back(std::to_string(pointsAndLines_) + " point or line primitive(s) skipped");
     imported_.valueSource = "vertex colours (float), " + conversionName(false, options_.colours);
-    imported_.mesh.materials = {unknownMaterial()};
+    imported_.reflectanceFromFile = materialsFromFile_ && !defaultMaterialUsed_;
+    if (materialsFromFile_ && defaultMaterialUsed_)
+      imported_.warnings.push_back("some faces have no material of the .mtl file: their reflectance is unknown");
     finishImportedMesh(imported_, path_);
     return std::move(imported_);
   }
@@ -108,6 +136,7 @@ class AssimpMeshBuilder {
       }
       nodeOf[v] = at->second;
     }
+    const int material = materialOf(mesh.mMaterialIndex);
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices < 3) {
@@ -117,6 +146,7 @@ class AssimpMeshBuilder {
       checkLimit(path_, face.mNumIndices, kMaxElementCorners, "vertices in a face");
       checkLimit(path_, imported_.mesh.elements.size() + 1, kMaxSolutionElements, "faces");
       Element element;
+      element.material = material;
       for (unsigned k = 0; k < face.mNumIndices; ++k) {
         if (face.mIndices[k] >= mesh.mNumVertices) fail("a face refers to a vertex that does not exist");
         element.corners.push_back(nodeOf[face.mIndices[k]]);
@@ -130,9 +160,37 @@ class AssimpMeshBuilder {
     }
   }
 
+  // The radview material of Assimp material `index`: from the OBJ's .mtl file, rho its Kd
+  // (clamped to [0, 1]) and E its Ke; without one, the unknown material 0.
+  int materialOf(unsigned index) {
+    if (!materialsFromFile_ || index >= scene_.mNumMaterials) {
+      defaultMaterialUsed_ = true;
+      return 0;
+    }
+    const auto known = materialIndex_.find(index);
+    if (known != materialIndex_.end()) return known->second;
+    const aiMaterial& m = *scene_.mMaterials[index];
+    aiString name;
+    m.Get(AI_MATKEY_NAME, name);
+    if (std::string(name.C_Str()) == AI_DEFAULT_MATERIAL_NAME) {
+      defaultMaterialUsed_ = true;
+      return materialIndex_[index] = 0;
+    }
+    aiColor3D diffuse(0.0f), emissive(0.0f);
+    m.Get(AI_MATKEY_COLOR_DIFFUSE, diffuse);
+    m.Get(AI_MATKEY_COLOR_EMISSIVE, emissive);
+    const Rgb rho(diffuse.r, diffuse.g, diffuse.b), E(emissive.r, emissive.g, emissive.b);
+    if (!isFinite(rho) || !isFinite(E)) fail(std::string("material ") + name.C_Str() + ": Kd or Ke is not finite");
+    imported_.mesh.materials.push_back({name.C_Str(), glm::clamp(rho, 0.0, 1.0), glm::max(E, Rgb(0.0))});
+    return materialIndex_[index] = int(imported_.mesh.materials.size()) - 1;
+  }
+
   const aiScene& scene_;
   const std::string& path_;
   const ImportOptions& options_;
+  const bool materialsFromFile_;
+  bool defaultMaterialUsed_ = false;
+  std::unordered_map<unsigned, int> materialIndex_;
   ImportedMesh imported_;
   std::unordered_map<CornerKey, uint32_t, CornerHash> nodeIndex_;
   size_t coloured_ = 0, withoutColours_ = 0, pointsAndLines_ = 0;

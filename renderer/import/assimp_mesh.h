@@ -3,7 +3,8 @@
 // radiosity meshes. Assimp gives every face corner its own vertex; corners with the same
 // position and the same colour are joined into one node again, so a value that jumps across an
 // edge (two colours at one position) stays two nodes. Faces keep their corners (no
-// triangulation): quads stay quads.
+// triangulation): quads stay quads. An OBJ whose `mtllib` files are beside it gives each face its
+// material's reflectance (Kd) and emission (Ke).
 #include "import/imported_mesh.h"
 
 #include <string>

@@ -63,6 +63,24 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
   return chosen;
 }
 
+std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, size_t maxElements) {
+  const MeshTopology topology(mesh);
+  std::unordered_map<uint64_t, uint32_t> perEdge;  // (element, edge) -> T-vertices on it
+  std::vector<char> unbalanced(mesh.elements.size(), 0);
+  for (const TVertex& t : topology.tVertices())
+    if (++perEdge[uint64_t(t.element) << 32 | t.edge] == 2) unbalanced[t.element] = 1;
+  std::vector<uint32_t> chosen;
+  size_t count = mesh.elements.size();
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    if (!unbalanced[e] || !MeshRefiner::canSplit(mesh, e)) continue;
+    const size_t grown = count + childCount(mesh.elements[e]) - 1;
+    if (grown > maxElements) break;
+    count = grown;
+    chosen.push_back(e);
+  }
+  return chosen;
+}
+
 MeshRefiner::MeshRefiner(const RadiosityMesh& mesh) {
   for (const Element& element : mesh.elements)
     for (size_t i = 0; i < element.midEdge.size(); ++i)

@@ -23,6 +23,10 @@ struct SubdivisionCriteria {
   // Splits stop where they would take the mesh above this many elements; the largest spreads
   // are split first.
   size_t maxElements = 20000;
+  // 2:1 balance: after each round, elements are also split until no element edge holds more
+  // than one T-vertex, that is until neighbours differ by at most one level of subdivision
+  // (the restricted quadtrees of finite-element meshing), whatever their spread.
+  bool balance = false;
 };
 
 // The display value a tolerance is measured in (see SubdivisionCriteria::tolerance).
@@ -31,6 +35,11 @@ double displayValue(const Rgb& B, double toneMapScale);
 // The elements to split, in order of decreasing spread: spread above the tolerance, not
 // emitting (emitters display saturated), large enough, and within maxElements.
 std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const SubdivisionCriteria& criteria);
+
+// The elements that 2:1 balance splits (SubdivisionCriteria::balance): those with an edge that
+// holds two or more T-vertices and that MeshRefiner can split, in element order, as many as
+// keep the mesh within maxElements.
+std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, size_t maxElements);
 
 // Splits elements of one mesh, remembering every edge's mid node so that neighbours split later
 // share it. Triangles split into 4 triangles, convex quads into 4 quads through a centre node,

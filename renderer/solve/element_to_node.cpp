@@ -15,7 +15,12 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
   scratch.clear();
   shooter.draw(stream, scratch);
   const Vec3& N = shooter.normal();
-  Value seen(0.0);
+  // The samples in front of both, with their kernel, and their rays cast together.
+  thread_local std::vector<const AreaSample*> facing;
+  thread_local std::vector<double> kernel;
+  thread_local std::vector<Segment> segments;
+  thread_local std::vector<uint8_t> blocked;
+  facing.clear(), kernel.clear(), segments.clear();
   double all = 0.0;
   for (const AreaSample& sample : scratch) {
     const Vec3 d = sample.position - x.position;
@@ -23,9 +28,16 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
     const double K = sample.weight * std::max(0.0, glm::dot(x.normal, d)) * std::max(0.0, -glm::dot(N, d)) / (r2 * r2);
     if (!(K > 0.0)) continue;
     all += K;
-    ++rays;
-    if (!visibility->occluded({x.position, x.normal, sample.position, N})) seen += K * sampleB(sample);
+    facing.push_back(&sample);
+    kernel.push_back(K);
+    segments.push_back({x.position, x.normal, sample.position, N});
   }
+  rays += segments.size();
+  blocked.resize(segments.size());
+  visibility->occluded(segments.data(), segments.size(), blocked.data());
+  Value seen(0.0);
+  for (size_t i = 0; i < facing.size(); ++i)
+    if (!blocked[i]) seen += kernel[i] * sampleB(*facing[i]);
   // No sample in front of both (a sliver of the shooter above the horizon that the samples
   // missed): nothing says it is hidden.
   return all > 0.0 ? F0 * (seen / all) : F0 * meanB;

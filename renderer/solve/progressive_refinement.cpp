@@ -223,11 +223,18 @@ void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
 }
 
 size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
-  const std::vector<uint32_t> chosen = elementsToSplit(solution(false), criteria);
+  std::vector<uint32_t> chosen = elementsToSplit(solution(false), criteria);
   if (chosen.empty()) return 0;
   const size_t firstNode = mesh_.nodes.size();
   std::vector<uint32_t> parentOf;
-  const size_t split = refiner_.split(mesh_, chosen, parentOf);
+  size_t split = refiner_.split(mesh_, chosen, parentOf);
+  while (criteria.balance) {
+    const std::vector<uint32_t> unbalanced = unbalancedElements(mesh_, criteria.maxElements);
+    const size_t more = unbalanced.empty() ? 0 : refiner_.split(mesh_, unbalanced, parentOf);
+    if (more == 0) break;
+    split += more;
+    chosen.insert(chosen.end(), unbalanced.begin(), unbalanced.end());
+  }
   for (uint32_t parent : parentOf) pieceOf_.push_back(pieceOf_[parent]);
   elementArea_.resize(mesh_.elements.size());
   for (uint32_t e : chosen) elementArea_[e] = area(mesh_.cornerPositions(e));

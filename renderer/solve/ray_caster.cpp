@@ -95,6 +95,29 @@ void RayCaster::embreeRay(const Segment& segment, float origin[3], float directi
   tfar = 1.0f;
 }
 
+void RayCaster::occluded(const Segment* segments, size_t count, uint8_t* blocked) const {
+  if (count == 0) return;
+  thread_local std::vector<RTCRay> rays;
+  rays.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    float origin[3], direction[3];
+    RTCRay& ray = rays[i];
+    embreeRay(segments[i], origin, direction, ray.tfar);
+    ray.org_x = origin[0], ray.org_y = origin[1], ray.org_z = origin[2];
+    ray.dir_x = direction[0], ray.dir_y = direction[1], ray.dir_z = direction[2];
+    ray.tnear = 0.0f;
+    ray.time = 0.0f;
+    ray.mask = ~0u;
+    ray.id = unsigned(i);
+    ray.flags = 0;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcOccluded1M(embree_->scene, &context, rays.data(), unsigned(count), sizeof(RTCRay));
+  for (size_t i = 0; i < count; ++i) blocked[i] = rays[i].tfar < 0.0f ? 1 : 0;
+}
+
 bool RayCaster::occluded(const Segment& segment) const {
   float origin[3], direction[3];
   RTCRay ray;

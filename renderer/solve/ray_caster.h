@@ -52,6 +52,10 @@ class RayCaster {
   // diagonal) along their normals, so that neither end's own surface, nor a surface it
   // touches at a corner, counts as a blocker. Thread-safe: any number of threads may query.
   bool occluded(const Segment& segment) const;
+  // The same for `count` segments at once, blocked[i] (1 or 0) for segments[i]: one call into
+  // Embree for all of them, traced as a coherent stream (the rays from one point to one patch
+  // are nearly parallel, so they share most of their traversal). Thread-safe.
+  void occluded(const Segment* segments, size_t count, uint8_t* blocked) const;
 
   // The nearest polygon along the ray, if any. Thread-safe.
   std::optional<RayHit> closestHit(const Ray& ray) const;

@@ -2,7 +2,8 @@
 //  - SolverShot: rays per second of the first shot (from a light patch: form factors,
 //    sampling, rays) to the 5,150 elements of the default uniform mesh (bounds diagonal / 40),
 //    on both cores, against EmbreeOccluded1: Embree's rtcOccluded1 alone on the same rays (the
-//    segments that shot casts, in the same frame), on both cores;
+//    segments that shot casts, in the same frame), on both cores, and EmbreeOccluded1M: the same
+//    rays as the solver casts them, each node's in one coherent stream;
 //  - SolveTime/N: a whole solve with `radview solve`'s defaults (patches of diagonal / 12, to
 //    1 % unshot; meshing included), subdivision up to N elements.
 //   build/radview_solver_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
@@ -52,7 +53,8 @@ void SolverShot(benchmark::State& state) {
 
 // The segments of the first shot: every node (as the solver places it) to every sample of the
 // shooter in front of both, with the solver's sample streams.
-std::vector<Segment> firstShotSegments(const Fixture& f) {
+// `groups`, when given, receives where each node's segments begin (and the end).
+std::vector<Segment> firstShotSegments(const Fixture& f, std::vector<size_t>* groups = nullptr) {
   const RadiosityMesh& mesh = f.fine;
   uint32_t shooter = 0;
   double most = -1.0;
@@ -75,6 +77,7 @@ std::vector<Segment> firstShotSegments(const Fixture& f) {
       const Vec3 toInside = inside - mesh.nodes[node].position;
       const Vec3 x = mesh.nodes[node].position +
                      std::min(0.01, 2.0 * RayCaster::kLift * diagonal / glm::length(toInside)) * toInside;
+      if (groups) groups->push_back(segments.size());
       samples.clear();
       SampleStream stream = SampleStream::forKey(SolverSettings{}.seed, 0, node);
       sampler.draw(stream, samples);
@@ -85,6 +88,7 @@ std::vector<Segment> firstShotSegments(const Fixture& f) {
       }
     }
   }
+  if (groups) groups->push_back(segments.size());
   return segments;
 }
 
@@ -120,6 +124,44 @@ void EmbreeOccluded1(benchmark::State& state) {
   state.counters["rays"] = double(rays.size());
 }
 
+// Embree alone on the same rays as the solver casts them: each node's rays in one coherent
+// stream (rtcOccluded1M), on both cores.
+void EmbreeOccluded1M(benchmark::State& state) {
+  Fixture& f = fixture();
+  const RayCaster caster(f.scene);
+  std::vector<size_t> groups;
+  std::vector<RTCRay> rays;
+  for (const Segment& segment : firstShotSegments(f, &groups)) {
+    float origin[3], direction[3];
+    RTCRay ray{};
+    caster.embreeRay(segment, origin, direction, ray.tfar);
+    ray.org_x = origin[0], ray.org_y = origin[1], ray.org_z = origin[2];
+    ray.dir_x = direction[0], ray.dir_y = direction[1], ray.dir_z = direction[2];
+    ray.mask = ~0u;
+    rays.push_back(ray);
+  }
+  auto* scene = static_cast<RTCScene>(caster.embreeScene());
+  std::atomic<uint64_t> occluded{0};
+  for (auto _ : state) {
+    parallelFor(
+        groups.size() - 1,
+        [&](size_t g) {
+          thread_local std::vector<RTCRay> batch;
+          batch.assign(rays.begin() + long(groups[g]), rays.begin() + long(groups[g + 1]));
+          RTCIntersectContext context;
+          rtcInitIntersectContext(&context);
+          context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+          rtcOccluded1M(scene, &context, batch.data(), unsigned(batch.size()), sizeof(RTCRay));
+          for (const RTCRay& ray : batch)
+            if (ray.tfar < 0.0f) ++occluded;
+        },
+        64);
+  }
+  benchmark::DoNotOptimize(occluded.load());
+  state.counters["rays/s"] = benchmark::Counter(double(rays.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["rays"] = double(rays.size());
+}
+
 void SolveTime(benchmark::State& state) {
   Fixture& f = fixture();
   SolveSettings settings;
@@ -136,6 +178,7 @@ void SolveTime(benchmark::State& state) {
 
 BENCHMARK(SolverShot)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(EmbreeOccluded1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(EmbreeOccluded1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(SolveTime)
     ->Arg(1000)
     ->Arg(2000)

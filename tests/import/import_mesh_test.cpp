@@ -10,9 +10,13 @@
 #include "tests/error_message.h"
 #include "tests/import/same_mesh_formats.h"
 
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
+#include <filesystem>
 
 namespace radview {
 namespace {
@@ -272,6 +276,55 @@ TEST(ImportMesh, AssumedReflectanceAndEmittersLetTheGatherRun) {
   // glTF materials carry rho; only the emitter is missing.
   EXPECT_EQ(loadFile(writeTestFile("colour.gltf", same.gltfColour0())).gatherRefusal,
             "this file gives no emitter, which the final gather needs (give --emitters-above LUMINANCE)");
+}
+
+TEST(ImportMesh, ObjMaterialLibraryGivesReflectanceAndEmission) {
+  const std::string obj =
+      "mtllib box.mtl\nv 0 0 0 1 1 1\nv 1 0 0 1 1 1\nv 1 1 0 1 1 1\nv 0 1 0 1 1 1\n"
+      "v 0 0 1 0.5 0.5 0.5\nv 1 0 1 0.5 0.5 0.5\nv 1 1 1 0.5 0.5 0.5\n"
+      "usemtl light\nf 1 2 3 4\nusemtl wall\nf 5 6 7\n";
+  const std::string path = writeTestFile("box.obj", obj);
+  std::filesystem::remove(std::filesystem::path(path).parent_path() / "box.mtl");  // from an earlier run
+  EXPECT_EQ(loadFile(path).gatherRefusal,
+            "this file gives no reflectance and no emitter, which the final gather needs (give --rho R,G,B and "
+            "--emitters-above LUMINANCE)");  // box.mtl is not there yet
+  writeTestFile("box.mtl", "newmtl light\nKd 0.1 0.2 0.3\nKe 5 5 5\nnewmtl wall\nKd 0.7 0.6 0.5\n");
+  const LoadedFile file = loadFile(path);
+  EXPECT_EQ(file.gatherRefusal, "");
+  ASSERT_EQ(file.mesh.elements.size(), 2u);
+  const Material& light = file.mesh.materials[size_t(file.mesh.elements[0].material)];
+  const Material& wall = file.mesh.materials[size_t(file.mesh.elements[1].material)];
+  EXPECT_EQ(light.name, "light");
+  EXPECT_EQ(light.E, Rgb(5.0));
+  EXPECT_NEAR(light.rho.g, 0.2, 1e-7);
+  EXPECT_EQ(wall.name, "wall");
+  EXPECT_FALSE(wall.isEmitter());
+  EXPECT_NEAR(wall.rho.r, 0.7, 1e-7);
+}
+
+// Another reader than radview's own takes the exported file as a PLY of the same mesh: Assimp's
+// PLY importer (what MeshLab-like tools see: the positions, the faces as polygons, the colours).
+TEST(ImportMesh, ExportedPlyReadsInAnotherReader) {
+  const RadiosityMesh written = loadFile(RADVIEW_SOURCE_DIR "/assets/t_vertices.gltf").mesh;  // quads
+  const std::string path = writeTestFile("exported.ply", "");
+  writePly(written, path);
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+  ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+  ASSERT_EQ(scene->mNumMeshes, 1u);
+  const aiMesh& mesh = *scene->mMeshes[0];
+  ASSERT_EQ(mesh.mNumVertices, written.nodes.size());
+  ASSERT_EQ(mesh.mNumFaces, written.elements.size());
+  ASSERT_TRUE(mesh.HasVertexColors(0));
+  for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+    EXPECT_EQ(mesh.mVertices[v].x, float(written.nodes[v].position.x)) << v;
+    EXPECT_EQ(mesh.mColors[0][v].g, float(written.nodes[v].B.g)) << v;
+  }
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+    ASSERT_EQ(mesh.mFaces[f].mNumIndices, written.elements[f].corners.size()) << f;
+    for (unsigned k = 0; k < mesh.mFaces[f].mNumIndices; ++k)
+      EXPECT_EQ(mesh.mFaces[f].mIndices[k], written.elements[f].corners[k]) << f;
+  }
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <set>
 
 namespace radview {
@@ -36,13 +37,14 @@ RadiosityMesh twoQuads(bool duplicateSharedEdge) {
 }
 
 // Solves the Cornell box with subdivision (patches of 100 mm, to 5 % unshot).
-RadiosityMesh solvedCornell(bool quadratic, SolveSummary& summary) {
+RadiosityMesh solvedCornell(bool quadratic, SolveSummary& summary, bool balance = false, size_t maxElements = 3000) {
   SolveSettings settings;
+  settings.subdivision.balance = balance;
   settings.solver.stopUnshotFraction = 0.05;
   settings.solver.quadratic = quadratic;
   settings.subdivision.tolerance = 8.0;
   settings.subdivision.minElementSize = 12.0;
-  settings.subdivision.maxElements = 3000;
+  settings.subdivision.maxElements = maxElements;
   settings.patchSize = 100.0;
   return solveRadiosity(test::cornellBox(), settings, summary);
 }
@@ -181,6 +183,35 @@ TEST(AdaptiveSubdivisionTest, CornellSolveLeavesTVerticesAndWritesThemBack) {
   const RadiosityMesh triangulated = repairTVertices(mesh, &repaired);
   EXPECT_GT(repaired, 0u);
   EXPECT_EQ(MeshTopology(triangulated).tVertices().size(), 0u);
+}
+
+// The most T-vertices any element edge of `mesh` holds.
+size_t mostTVerticesOnAnEdge(const RadiosityMesh& mesh) {
+  std::map<std::pair<uint32_t, uint32_t>, size_t> perEdge;
+  size_t most = 0;
+  for (const TVertex& t : MeshTopology(mesh).tVertices()) most = std::max(most, ++perEdge[{t.element, t.edge}]);
+  return most;
+}
+
+// Without balance, subdivision leaves edges beside elements split two and more levels finer;
+// with it (and room for it: the element cap is not reached), no edge holds more than one
+// T-vertex, and the solution is the same to within the discretisation: the absorbed power
+// agrees within 2 %.
+TEST(AdaptiveSubdivisionTest, TwoToOneBalanceLeavesAtMostOneTVertexPerEdge) {
+  SolveSummary plain, balanced;
+  const RadiosityMesh unbalancedMesh = solvedCornell(false, plain, false, 20000);
+  const RadiosityMesh balancedMesh = solvedCornell(false, balanced, true, 20000);
+  ASSERT_LT(balancedMesh.elements.size(), 20000u);
+  EXPECT_GE(mostTVerticesOnAnEdge(unbalancedMesh), 2u);
+  EXPECT_EQ(mostTVerticesOnAnEdge(balancedMesh), 1u);
+  validateMesh(balancedMesh, "balanced Cornell");
+  const size_t plainT = MeshTopology(unbalancedMesh).tVertices().size();
+  const size_t balancedT = MeshTopology(balancedMesh).tVertices().size();
+  std::printf("Cornell, patches of 100 mm: %zu elements, %zu T-vertices; 2:1 balanced %zu elements, %zu T-vertices\n",
+              unbalancedMesh.elements.size(), plainT, balancedMesh.elements.size(), balancedT);
+  EXPECT_GT(balancedMesh.elements.size(), unbalancedMesh.elements.size());
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(balanced.energy.absorbed[k] / plain.energy.absorbed[k], 1.0, 0.02) << "channel " << k;
 }
 
 TEST(AdaptiveSubdivisionTest, QuadraticElementsShareTheirMidEdgeNodes) {
