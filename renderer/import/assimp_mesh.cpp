@@ -85,6 +85,9 @@ class AssimpMeshBuilder {
            ": radview reads B from per-vertex colours (OBJ: v x y z r g b)");
     if (withoutColours_ > 0)
       imported_.warnings.push_back(std::to_string(withoutColours_) + " mesh(es) without vertex colours skipped");
+    if (repeatedCorners_ > 0)
+      imported_.warnings.push_back(std::to_string(repeatedCorners_) +
+                                   " face(s) with two corners at one vertex (one position and colour) dropped");
     if (pointsAndLines_ > 0)
       imported_.warnings.push_back(std::to_string(pointsAndLines_) + " point or line primitive(s) skipped");
     imported_.valueSource = "vertex colours (float), " + conversionName(false, options_.colours);
@@ -137,6 +140,7 @@ class AssimpMeshBuilder {
       nodeOf[v] = at->second;
     }
     const int material = materialOf(mesh.mMaterialIndex);
+    const bool mirrored = transform.Determinant() < 0.0f;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices < 3) {
@@ -151,11 +155,16 @@ class AssimpMeshBuilder {
         if (face.mIndices[k] >= mesh.mNumVertices) fail("a face refers to a vertex that does not exist");
         element.corners.push_back(nodeOf[face.mIndices[k]]);
       }
+      // Two corners joined into one node (the same vertex twice, or two vertices at one position
+      // with one colour): no area between them.
       std::vector<uint32_t> sorted = element.corners;
       std::sort(sorted.begin(), sorted.end());
-      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
-        fail("face " + std::to_string(imported_.mesh.elements.size()) + " uses the vertex at " +
-             format(mesh.mVertices[face.mIndices[0]]) + " or another twice");
+      if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+        ++repeatedCorners_;
+        continue;
+      }
+      // A mirroring transform turns the winding round; turned back, the normal stays the face's.
+      if (mirrored) std::reverse(element.corners.begin(), element.corners.end());
       imported_.mesh.elements.push_back(std::move(element));
     }
   }
@@ -193,7 +202,7 @@ class AssimpMeshBuilder {
   std::unordered_map<unsigned, int> materialIndex_;
   ImportedMesh imported_;
   std::unordered_map<CornerKey, uint32_t, CornerHash> nodeIndex_;
-  size_t coloured_ = 0, withoutColours_ = 0, pointsAndLines_ = 0;
+  size_t coloured_ = 0, withoutColours_ = 0, pointsAndLines_ = 0, repeatedCorners_ = 0;
 };
 
 }  // namespace

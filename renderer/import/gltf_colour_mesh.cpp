@@ -1,9 +1,12 @@
 #include "import/gltf_colour_mesh.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "scene/gltf_import.h"
 
 #include <tiny_gltf.h>
+
+#include <unordered_map>
 
 namespace radview {
 
@@ -29,20 +32,26 @@ ColourMeshReading readColourMesh(const GltfDocument& document, const ImportOptio
     bool integer = false;
     const std::vector<Rgb> colours = readVertexColours(document, p.primitive, p.what, p.positions.size(), &integer);
     integerColours = integerColours || integer;
-    const uint32_t first = uint32_t(mesh.nodes.size());
-    for (size_t v = 0; v < p.positions.size(); ++v) {
-      Node node;
-      node.position = p.positions[v];
-      // COLOR_0 is linear (glTF 2.0, "Meshes"): normalized integers are only scaled, never decoded,
-      // unless --colours srgb says the file breaks that rule.
-      const ColourEncoding encoding =
-          options.colours == ColourEncoding::Srgb ? ColourEncoding::Srgb : ColourEncoding::Linear;
-      for (int k = 0; k < 3; ++k) node.B[k] = linearValue(colours[v][k], 0.0, encoding);
-      mesh.nodes.push_back(node);
-    }
+    // COLOR_0 is linear (glTF 2.0, "Meshes"): normalized integers are only scaled, never decoded,
+    // unless --colours srgb says the file breaks that rule.
+    const ColourEncoding encoding =
+        options.colours == ColourEncoding::Srgb ? ColourEncoding::Srgb : ColourEncoding::Linear;
+    // Only the vertices the triangles use become nodes: an instanced primitive with many unused
+    // (or zero-filled) vertices must not multiply them.
+    std::unordered_map<uint32_t, uint32_t> nodeOf;
     for (const auto& t : p.triangles) {
       Element element;
-      element.corners = {first + t[0], first + t[1], first + t[2]};
+      for (uint32_t v : t) {
+        const auto [at, added] = nodeOf.emplace(v, uint32_t(mesh.nodes.size()));
+        if (added) {
+          checkLimit(document.path(), mesh.nodes.size() + 1, kMaxSolutionNodes, "vertices in the COLOR_0 mesh");
+          Node node;
+          node.position = p.positions[v];
+          for (int k = 0; k < 3; ++k) node.B[k] = linearValue(colours[v][k], 0.0, encoding);
+          mesh.nodes.push_back(node);
+        }
+        element.corners.push_back(at->second);
+      }
       element.material = p.material;
       mesh.elements.push_back(std::move(element));
     }

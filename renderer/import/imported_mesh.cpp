@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <unordered_set>
 
 namespace radview {
 
@@ -70,10 +71,24 @@ void finishImportedMesh(ImportedMesh& imported, const std::string& path) {
   if (nodes.size() < mesh.nodes.size())
     imported.warnings.push_back(std::to_string(mesh.nodes.size() - nodes.size()) +
                                 " vertex(es) that no face uses left out");
+  // Tags stay on the edges of kept elements; one that only a dropped face had goes with it.
+  std::unordered_set<uint64_t> elementEdges;
+  auto key = [](uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); };
+  for (const Element& element : mesh.elements)
+    for (size_t i = 0; i < element.corners.size(); ++i)
+      elementEdges.insert(key(element.corners[i], element.corners[(i + 1) % element.corners.size()]));
   std::vector<DiscontinuityEdge> edges;
-  for (const DiscontinuityEdge& d : mesh.discontinuities)
-    if (renumbered[d.a] != kUnused && renumbered[d.b] != kUnused)
+  size_t droppedTags = 0;
+  for (const DiscontinuityEdge& d : mesh.discontinuities) {
+    const bool kept = renumbered[d.a] != kUnused && renumbered[d.b] != kUnused &&
+                      elementEdges.count(key(renumbered[d.a], renumbered[d.b]));
+    if (kept)
       edges.push_back({renumbered[d.a], renumbered[d.b], d.order});
+    else
+      ++droppedTags;
+  }
+  if (droppedTags > 0)
+    imported.warnings.push_back(std::to_string(droppedTags) + " tagged edge(s) that no kept face has left out");
   mesh.nodes = std::move(nodes);
   mesh.discontinuities = std::move(edges);
   validateMesh(mesh, path);

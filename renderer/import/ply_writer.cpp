@@ -3,6 +3,8 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 
+#include <cfloat>
+#include <cmath>
 #include <cstring>
 #include <type_traits>
 
@@ -28,6 +30,16 @@ std::string plyBytes(const RadiosityMesh& mesh, const std::string& source) {
     if (e.order() != ElementOrder::Linear)
       throw Error(source, "has quadratic elements, which PLY faces cannot hold (they have no mid-edge nodes)");
     largest = std::max(largest, e.corners.size());
+  }
+  // Every value is written as float32: one past its range would read back as infinity.
+  auto fits = [](const Vec3& v) {
+    return std::abs(v.x) <= FLT_MAX && std::abs(v.y) <= FLT_MAX && std::abs(v.z) <= FLT_MAX;
+  };
+  for (size_t n = 0; n < mesh.nodes.size(); ++n) {
+    bool ok = fits(mesh.nodes[n].position) && fits(mesh.nodes[n].B);
+    if (mesh.hasGradients)
+      for (const Vec3& g : mesh.nodes[n].gradient) ok = ok && fits(g);
+    if (!ok) throw Error(source, "node " + std::to_string(n) + " has a value that does not fit in float32");
   }
   const bool wideCounts = largest > 255;
   size_t tagged = 0;  // C1 edges are no discontinuity: not written

@@ -63,18 +63,24 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
   return chosen;
 }
 
-std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, size_t maxElements) {
+std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, const SubdivisionCriteria& criteria) {
   const MeshTopology topology(mesh);
-  std::unordered_map<uint64_t, uint32_t> perEdge;  // (element, edge) -> T-vertices on it
+  // (element, edge) -> the first T-vertex position on it; a second position marks it.
+  std::unordered_map<uint64_t, uint32_t> firstPosition;
   std::vector<char> unbalanced(mesh.elements.size(), 0);
-  for (const TVertex& t : topology.tVertices())
-    if (++perEdge[uint64_t(t.element) << 32 | t.edge] == 2) unbalanced[t.element] = 1;
+  for (const TVertex& t : topology.tVertices()) {
+    const uint32_t position = topology.positionId(t.node);
+    const auto [at, added] = firstPosition.emplace(uint64_t(t.element) << 32 | t.edge, position);
+    if (!added && at->second != position) unbalanced[t.element] = 1;
+  }
   std::vector<uint32_t> chosen;
   size_t count = mesh.elements.size();
   for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
     if (!unbalanced[e] || !MeshRefiner::canSplit(mesh, e)) continue;
+    if (mesh.materials[mesh.elements[e].material].isEmitter()) continue;
+    if (longestEdge(mesh.cornerPositions(e)) < 2.0 * criteria.minElementSize) continue;
     const size_t grown = count + childCount(mesh.elements[e]) - 1;
-    if (grown > maxElements) break;
+    if (grown > criteria.maxElements) break;
     count = grown;
     chosen.push_back(e);
   }

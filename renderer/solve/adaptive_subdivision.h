@@ -37,9 +37,10 @@ double displayValue(const Rgb& B, double toneMapScale);
 std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const SubdivisionCriteria& criteria);
 
 // The elements that 2:1 balance splits (SubdivisionCriteria::balance): those with an edge that
-// holds two or more T-vertices and that MeshRefiner can split, in element order, as many as
-// keep the mesh within maxElements.
-std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, size_t maxElements);
+// holds T-vertices at two or more positions (nodes duplicated along a C-1 edge count once) and
+// that elementsToSplit would split but for their spread (not emitting, not below
+// minElementSize, splittable), in element order, as many as keep the mesh within maxElements.
+std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, const SubdivisionCriteria& criteria);
 
 // Splits elements of one mesh, remembering every edge's mid node so that neighbours split later
 // share it. Triangles split into 4 triangles, convex quads into 4 quads through a centre node,

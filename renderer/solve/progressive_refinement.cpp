@@ -229,7 +229,7 @@ size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
   std::vector<uint32_t> parentOf;
   size_t split = refiner_.split(mesh_, chosen, parentOf);
   while (criteria.balance) {
-    const std::vector<uint32_t> unbalanced = unbalancedElements(mesh_, criteria.maxElements);
+    const std::vector<uint32_t> unbalanced = unbalancedElements(mesh_, criteria);
     const size_t more = unbalanced.empty() ? 0 : refiner_.split(mesh_, unbalanced, parentOf);
     if (more == 0) break;
     split += more;

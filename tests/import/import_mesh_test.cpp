@@ -212,6 +212,27 @@ TEST(ImportMesh, BadFacesAndValuesAreRefusedNamingTheFault) {
             (std::vector<std::string>{"1 zero-area face(s) dropped", "1 vertex(es) that no face uses left out"}));
 }
 
+TEST(ImportMesh, ATagOnlyADroppedFaceHadGoesWithIt) {
+  const std::string rgb = "property float red\nproperty float green\nproperty float blue\n";
+  const std::string vertices = "0 0 0 1 1 1\n1 0 0 1 1 1\n2 0 0 1 1 1\n0 1 0 1 1 1\n1 1 0 1 1 1\n";
+  const std::string edges = "element edge 1\nproperty int vertex1\nproperty int vertex2\nproperty char continuity\n";
+  const ImportedMesh m = readPlyText(plyWithVertices(rgb, vertices, "3 0 1 2\n3 0 4 3\n3 1 2 4\n", edges) + "0 1 -1\n");
+  EXPECT_EQ(m.mesh.elements.size(), 2u);
+  EXPECT_TRUE(m.mesh.discontinuities.empty());
+  EXPECT_EQ(m.warnings, (std::vector<std::string>{"1 zero-area face(s) dropped",
+                                                  "1 tagged edge(s) that no kept face has left out"}));
+}
+
+TEST(ImportMesh, ObjFacesWhoseCornersJoinAreDropped) {
+  // Vertices 1 and 4 share a position and a colour: one node, and the first face has no area.
+  const std::string obj = "v 0 0 0 1 1 1\nv 1 0 0 1 1 1\nv 0 1 0 1 1 1\nv 0 0 0 1 1 1\nf 1 2 4\nf 1 2 3\n";
+  const LoadedFile file = loadFile(writeTestFile("joined.obj", obj));
+  EXPECT_EQ(file.mesh.elements.size(), 1u);
+  EXPECT_EQ(file.mesh.nodes.size(), 3u);
+  EXPECT_EQ(file.warnings,
+            (std::vector<std::string>{"1 face(s) with two corners at one vertex (one position and colour) dropped"}));
+}
+
 TEST(ImportMesh, ExportedPlyReadsBackToTheSameMesh) {
   const RadiosityMesh written = loadFile(RADVIEW_SOURCE_DIR "/assets/discontinuities.gltf").mesh;
   const std::string path = writeTestFile("exported.ply", "");

@@ -185,11 +185,16 @@ TEST(AdaptiveSubdivisionTest, CornellSolveLeavesTVerticesAndWritesThemBack) {
   EXPECT_EQ(MeshTopology(triangulated).tVertices().size(), 0u);
 }
 
-// The most T-vertices any element edge of `mesh` holds.
+// The most T-vertex positions any element edge of `mesh` holds.
 size_t mostTVerticesOnAnEdge(const RadiosityMesh& mesh) {
-  std::map<std::pair<uint32_t, uint32_t>, size_t> perEdge;
+  const MeshTopology topology(mesh);
+  std::map<std::pair<uint32_t, uint32_t>, std::set<uint32_t>> perEdge;
   size_t most = 0;
-  for (const TVertex& t : MeshTopology(mesh).tVertices()) most = std::max(most, ++perEdge[{t.element, t.edge}]);
+  for (const TVertex& t : topology.tVertices()) {
+    std::set<uint32_t>& positions = perEdge[{t.element, t.edge}];
+    positions.insert(topology.positionId(t.node));
+    most = std::max(most, positions.size());
+  }
   return most;
 }
 
