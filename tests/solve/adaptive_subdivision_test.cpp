@@ -71,6 +71,41 @@ TEST(AdaptiveSubdivisionTest, ChoosesLargeSpreadsWithinTheLimits) {
   EXPECT_TRUE(elementsToSplit(mesh, criteria).empty());
 }
 
+// One wide quad below quads that meet on its top edge: at x = 2/3 with their own nodes each (a
+// C-1 edge between them: two nodes, one position) the edge holds one T-vertex position and is
+// balanced; with a third quad meeting at x = 4/3 too it holds two, and the wide quad is split.
+TEST(AdaptiveSubdivisionTest, BalanceCountsTVertexPositionsNotNodes) {
+  auto mesh = [](bool third) {
+    RadiosityMesh m;
+    m.materials = {{"grey", Rgb(0.5), Rgb(0.0)}};
+    auto node = [&](double x, double y) {
+      m.nodes.push_back(Node{Vec3(x, y, 0)});
+      return uint32_t(m.nodes.size() - 1);
+    };
+    const uint32_t a = node(0, 0), b = node(2, 0), c = node(2, 1), d = node(0, 1);
+    m.elements.push_back({{a, b, c, d}, {}, 0, 0});
+    const double split = 2.0 / 3.0;
+    const uint32_t p = node(split, 1), q = node(split, 2), e = node(0, 2);
+    m.elements.push_back({{d, p, q, e}, {}, 0, 0});
+    const uint32_t p2 = node(split, 1), q2 = node(split, 2);  // the C-1 edge's other side
+    if (third) {
+      const uint32_t r = node(2 * split, 1), t = node(2 * split, 2), f = node(2, 2);
+      m.elements.push_back({{p2, r, t, q2}, {}, 0, 0});
+      m.elements.push_back({{r, c, f, t}, {}, 0, 0});
+    } else {
+      const uint32_t f = node(2, 2);
+      m.elements.push_back({{p2, c, f, q2}, {}, 0, 0});
+    }
+    validateMesh(m, "balance test");
+    return m;
+  };
+  SubdivisionCriteria criteria;
+  EXPECT_TRUE(unbalancedElements(mesh(false), criteria).empty());
+  EXPECT_EQ(unbalancedElements(mesh(true), criteria), (std::vector<uint32_t>{0}));
+  criteria.minElementSize = 1.5;  // the wide quad's longest edge is 2: below twice that
+  EXPECT_TRUE(unbalancedElements(mesh(true), criteria).empty());
+}
+
 TEST(AdaptiveSubdivisionTest, SplittingOneSideLeavesATVertexUntilTheOtherSplits) {
   RadiosityMesh mesh = twoQuads(false);
   MeshRefiner refiner(mesh);
