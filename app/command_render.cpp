@@ -17,15 +17,16 @@
 
 namespace radview {
 
-void parseSize(const std::string& text, int& width, int& height) {
+void parseSize(const std::string& text, int& width, int& height, const std::string& option) {
   std::smatch m;
   // Up to 9 digits: anything longer is past the limit anyway, and stoi cannot overflow.
   static const std::regex pattern(R"((\d{1,9})x(\d{1,9}))");
-  if (!std::regex_match(text, m, pattern)) throw Error("--size '" + text + "': expected WIDTHxHEIGHT, e.g. 1024x768");
+  if (!std::regex_match(text, m, pattern))
+    throw Error(option + " '" + text + "': expected WIDTHxHEIGHT, e.g. 1024x768");
   width = std::stoi(m[1]);
   height = std::stoi(m[2]);
-  if (width < 1 || height < 1) throw Error("--size '" + text + "': each side must be at least 1 pixel");
-  checkLimit("--size " + text, uint64_t(std::max(width, height)), kMaxImageSide, "pixels on a side");
+  if (width < 1 || height < 1) throw Error(option + " '" + text + "': each side must be at least 1 pixel");
+  checkLimit(option + " " + text, uint64_t(std::max(width, height)), kMaxImageSide, "pixels on a side");
 }
 
 void checkImageMemory(const std::string& sizeText, int width, int height, uint64_t bytesPerPixel,

@@ -1,5 +1,9 @@
 #include "app/command_solve.h"
 
+#include "app/commands.h"
+#include "core/camera.h"
+#include "core/strings.h"
+
 #include "core/error.h"
 #include "core/limits.h"
 #include "core/parallel_for.h"
@@ -70,6 +74,32 @@ class ProgressBar {
   Clock::time_point last_{};
 };
 
+// The views --view names, each looked at with --view-size pixels. Throws Error naming the option.
+std::vector<SolveView> solveViews(const SolveOptions& options, const Scene& scene) {
+  std::vector<SolveView> views;
+  if (options.views.empty()) return views;
+  int width = 0, height = 0;
+  parseSize(options.viewSize, width, height, "--view-size");
+  for (const std::string& spec : options.views) {
+    if (spec == "file") {
+      if (scene.cameras.empty()) throw Error(options.file, "--view file: the scene has no camera");
+      for (const SceneCamera& camera : scene.cameras)
+        views.push_back({cameraFromSpec("file", scene.bounds(), {camera}), width, height,
+                         camera.name.empty() ? "file" : camera.name});
+      continue;
+    }
+    try {
+      views.push_back({cameraFromSpec(spec, scene.bounds(), scene.cameras), width, height, spec});
+    } catch (const Error& e) {
+      // cameraFromSpec names the option it serves most often, --camera.
+      std::string reason = e.what();
+      if (reason.rfind("--camera", 0) == 0) reason.replace(0, 8, "--view");
+      throw Error(reason);
+    }
+  }
+  return views;
+}
+
 }  // namespace
 
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
@@ -99,6 +129,14 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
   command->add_flag("--balance", o.settings.subdivision.balance,
                     "2:1 balance: also split elements until neighbours differ by at most one level (no element edge "
                     "holds more than one T-vertex)");
+  command
+      ->add_option("--view", o.views,
+                   "Mesh for this view (C&W 9.3), repeatable: a preset (" + joined(cameraPresetNames()) +
+                       "), ex,ey,ez/tx,ty,tz[/ux,uy,uz], or 'file' for each of the scene's cameras. Subdivision "
+                       "then splits only elements the views see, those whose error shows on most pixels first")
+      ->type_name("CAMERA");
+  command->add_option("--view-size", o.viewSize, "The pixels each --view is looked at with, WIDTHxHEIGHT")
+      ->capture_default_str();
   command->add_flag("--quadratic", o.settings.solver.quadratic,
                     "Quadratic elements: nodes at the middle of every edge too");
   command->add_flag("--triangulate-t-vertices", o.triangulateTVertices,
@@ -135,6 +173,7 @@ int runSolve(const SolveOptions& options) {
   const Scene& scene = file.scene;
   SolveSettings settings = options.settings;
   settings.ambient = !options.noAmbient;
+  settings.subdivision.views = solveViews(options, scene);
   settings = resolvedFor(scene, settings);
 
   ProgressBar bar(isatty(fileno(stderr)) != 0, settings.solver.stopUnshotFraction);
@@ -150,6 +189,7 @@ int runSolve(const SolveOptions& options) {
   }
   bar.update(summary.progress, true);
   bar.finish();
+  for (const std::string& w : summary.viewWarnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   size_t repaired = 0;
   if (options.triangulateTVertices) mesh = repairTVertices(mesh, &repaired);
   writeSolution(mesh, options.out, scene.cameras);
@@ -168,6 +208,9 @@ int runSolve(const SolveOptions& options) {
               summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,
               settings.subdivision.minElementSize, settings.subdivision.maxElements,
               settings.subdivision.balance ? ", 2:1 balanced" : "");
+  if (summary.views > 0)
+    std::printf("meshed for %zu view%s at %s (elements no view sees are not split)\n", summary.views,
+                summary.views == 1 ? "" : "s", options.viewSize.c_str());
   if (settings.discontinuityMeshing) std::cout << discontinuities << "\n" << std::flush;
   std::printf("discontinuity edges: C-1 %zu, C0 %zu\n", topology.countEdges(Continuity::Cm1),
               topology.countEdges(Continuity::C0));

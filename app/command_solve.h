@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace radview {
 
@@ -17,7 +18,9 @@ struct SolveOptions {
   std::string out;
   bool triangulateTVertices = false;
   bool noAmbient = false;
-  SolveSettings settings;  // the options bind to its fields: the library's defaults are the command's
+  std::vector<std::string> views;     // --view: camera specs; "file" stands for each of the scene's cameras
+  std::string viewSize = "1024x768";  // --view-size
+  SolveSettings settings;             // the options bind to its fields: the library's defaults are the command's
 };
 
 CLI::App* addSolveCommand(CLI::App& app, SolveOptions& options);

@@ -133,8 +133,8 @@ void checkGatherOptions(const GatherOptions& gather);
 void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather, int width,
                        int height, const std::string& out, const std::string& linearOut);
 
-// "1024x768" -> width, height. Throws Error.
-void parseSize(const std::string& text, int& width, int& height);
+// "1024x768" -> width, height. Throws Error naming `option`.
+void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");
 // Throws Error("--size TEXT: needs about ...") when `what`, at bytesPerPixel (core/memory_budget.h),
 // would need more memory than is available.
 void checkImageMemory(const std::string& sizeText, int width, int height, uint64_t bytesPerPixel,

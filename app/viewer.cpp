@@ -205,10 +205,14 @@ struct ViewerWork {
   }
 
   // Starting or cancelling the background solve, and showing what it has published.
-  void handleSolve(ViewerState& state) {
+  // A solve for the view meshes for the scene's columns as they are when it starts.
+  void handleSolve(ViewerState& state, int width, int height) {
     if (state.solveRequested) {
       state.solveRequested = false;
-      solve.start(state.viewed.file.scene, SolveSettings{});
+      SolveSettings settings;
+      if (state.solveForView && width > 0 && height > 0)
+        settings.subdivision.views = {{framedFor(state.camera, double(width) / height), width, height, "the window's"}};
+      solve.start(state.viewed.file.scene, settings);
     }
     if (state.cancelSolveRequested) {
       state.cancelSolveRequested = false;
@@ -396,14 +400,14 @@ int runViewer(const ViewerOptions& options) {
     glfwPollEvents();
     handleDrag(window, input);
     work.handleOpen(state, input, options.display.elementSize, options.import);
-    work.handleSolve(state);
-    handleWriteSolution(state);
-    work.handleReference(state);
     int fbWidth = 0, fbHeight = 0, windowWidth = 0, windowHeight = 0;
     glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
     glfwGetWindowSize(window, &windowWidth, &windowHeight);
     // The panel's columns in framebuffer pixels (a HiDPI framebuffer has more than the window).
     const int panel = windowWidth > 0 ? int(std::lround(state.panelWidth * double(fbWidth) / windowWidth)) : 0;
+    work.handleSolve(state, fbWidth - panel, fbHeight);
+    handleWriteSolution(state);
+    work.handleReference(state);
     const float background[4] = {0.08f, 0.08f, 0.09f, 1.0f};
     glClearNamedFramebufferfv(0, GL_COLOR, 0, background);
     work.handleEdit(state, panel, fbWidth - panel, fbHeight, windowWidth > 0 ? double(fbWidth) / windowWidth : 1.0);

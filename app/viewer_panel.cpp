@@ -145,6 +145,14 @@ void drawSolveControls(ViewerState& state) {
       ImGui::SetTooltip(
           "Progressive refinement with Embree visibility and adaptive subdivision, as radview solve; "
           "the partial solution is shown as it converges (with the ambient term)");
+    if (!state.solving) {
+      ImGui::SameLine();
+      ImGui::Checkbox("for this view", &state.solveForView);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Subdivision splits only elements this view sees, those whose error shows on most pixels first "
+            "(C&W 9.3), as radview solve --view");
+    }
     ImGui::TextWrapped("%s",
                        state.solveStatus.empty() ? "showing direct light, unoccluded" : state.solveStatus.c_str());
   }

@@ -48,6 +48,7 @@ struct ViewerState {
   bool solveRequested = false;
   bool cancelSolveRequested = false;
   bool solving = false;
+  bool solveForView = false;  // the solve's subdivision meshes for the current view (C&W §9.3)
   std::string solveStatus;
   std::string solutionPath;  // where "Write solution" writes the mesh shown
   bool writeSolutionRequested = false;

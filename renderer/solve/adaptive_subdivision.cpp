@@ -36,9 +36,12 @@ double displayValue(const Rgb& B, double toneMapScale) {
 
 std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const SubdivisionCriteria& criteria) {
   const double scale = toneMapScale(valued);
-  std::vector<std::pair<double, uint32_t>> candidates;  // (spread, element)
+  const bool forViews = !criteria.views.empty();
+  const std::vector<uint32_t> pixels = viewedPixels(valued, criteria.views);
+  std::vector<std::pair<double, uint32_t>> candidates;  // (priority, element)
   for (uint32_t e = 0; e < valued.elements.size(); ++e) {
     const Element& element = valued.elements[e];
+    if (forViews && pixels[e] == 0) continue;
     if (valued.materials[element.material].isEmitter() || !MeshRefiner::canSplit(valued, e)) continue;
     if (longestEdge(valued.cornerPositions(e)) < 2.0 * criteria.minElementSize) continue;
     double lo = INFINITY, hi = -INFINITY;
@@ -48,7 +51,8 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }
-    if (hi - lo > criteria.tolerance) candidates.push_back({hi - lo, e});
+    const double spread = hi - lo;
+    if (spread > criteria.tolerance) candidates.push_back({forViews ? spread * spread * double(pixels[e]) : spread, e});
   }
   std::sort(candidates.begin(), candidates.end(),
             [](const auto& x, const auto& y) { return x.first != y.first ? x.first > y.first : x.second < y.second; });
@@ -65,6 +69,7 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
 
 std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, const SubdivisionCriteria& criteria) {
   const MeshTopology topology(mesh);
+  const std::vector<uint32_t> pixels = viewedPixels(mesh, criteria.views);
   // (element, edge) -> the first T-vertex position on it; a second position marks it.
   std::unordered_map<uint64_t, uint32_t> firstPosition;
   std::vector<char> unbalanced(mesh.elements.size(), 0);
@@ -77,6 +82,7 @@ std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, const Subdiv
   size_t count = mesh.elements.size();
   for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
     if (!unbalanced[e] || !MeshRefiner::canSplit(mesh, e)) continue;
+    if (!criteria.views.empty() && pixels[e] == 0) continue;
     if (mesh.materials[mesh.elements[e].material].isEmitter()) continue;
     if (longestEdge(mesh.cornerPositions(e)) < 2.0 * criteria.minElementSize) continue;
     const size_t grown = count + childCount(mesh.elements[e]) - 1;

@@ -4,6 +4,7 @@
 // new mid-edge node as a T-vertex (C&W §9.2), which radview keeps and shows; the mid-edge
 // node is shared as soon as the neighbour splits too.
 #include "mesh/radiosity_mesh.h"
+#include "solve/view_importance.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -27,19 +28,28 @@ struct SubdivisionCriteria {
   // than one T-vertex, that is until neighbours differ by at most one level of subdivision
   // (the restricted quadtrees of finite-element meshing), whatever their spread.
   bool balance = false;
+  // Views to mesh for (C&W §9.3, solve/view_importance.h); none: the view-independent criterion.
+  // With views, an element is split only where their pixels see its front side, and under the
+  // element budget the splits that remove the most squared display error from the views come
+  // first: spread^2 times the pixels that see the element (the sum over those pixels of an
+  // interpolation error that scales with the spread), rather than the largest spread anywhere.
+  // 2:1 balance too splits only elements the views see.
+  std::vector<SolveView> views;
 };
 
 // The display value a tolerance is measured in (see SubdivisionCriteria::tolerance).
 double displayValue(const Rgb& B, double toneMapScale);
 
-// The elements to split, in order of decreasing spread: spread above the tolerance, not
-// emitting (emitters display saturated), large enough, and within maxElements.
+// The elements to split, in order of decreasing spread (with views: of spread^2 times the pixels
+// that see them, seen elements only): spread above the tolerance, not emitting (emitters
+// display saturated), large enough, and within maxElements.
 std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const SubdivisionCriteria& criteria);
 
 // The elements that 2:1 balance splits (SubdivisionCriteria::balance): those with an edge that
 // holds T-vertices at two or more positions (nodes duplicated along a C-1 edge count once) and
 // that elementsToSplit would split but for their spread (not emitting, not below
-// minElementSize, splittable), in element order, as many as keep the mesh within maxElements.
+// minElementSize, splittable, seen by the views if there are any), in element order, as many
+// as keep the mesh within maxElements.
 std::vector<uint32_t> unbalancedElements(const RadiosityMesh& mesh, const SubdivisionCriteria& criteria);
 
 // Splits elements of one mesh, remembering every edge's mid node so that neighbours split later

@@ -70,11 +70,17 @@ void BackgroundSolve::publish(RadiosityMesh mesh, const std::string& status) {
 void BackgroundSolve::run(Scene scene, SolveSettings settings) {
   try {
     RadiositySolve solve(scene, settings);
+    // Whether the subdivision is for the view, or why a view asked for was left out.
+    std::string viewNote;
+    if (!settings.subdivision.views.empty()) {
+      const SolveSummary summary = solve.summary();
+      viewNote = summary.viewWarnings.empty() ? "; meshed for the view" : "; " + summary.viewWarnings.front();
+    }
     auto last = Clock::now();
     auto show = [&](const char* phase) {
       RadiosityMesh mesh = solve.solution();
       const size_t tVertices = MeshTopology(mesh).tVertices().size();
-      publish(std::move(mesh), describe(phase, solve.progress(), tVertices));
+      publish(std::move(mesh), describe(phase, solve.progress(), tVertices) + viewNote);
       last = Clock::now();
     };
     show("shooting");

@@ -29,6 +29,12 @@ RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, Dis
 RadiositySolve::RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report)
     : settings_(resolvedFor(scene, settings)),
       solver_(std::make_unique<ProgressiveRefinement>(scene, initialMesh(scene, settings_, report), settings_.solver)) {
+  std::vector<SolveView>& views = settings_.subdivision.views;
+  if (views.empty()) return;
+  UsableViews usable = usableViews(solver_->solution(false), views);
+  views = std::move(usable.views);
+  viewWarnings_ = std::move(usable.warnings);
+  if (views.empty()) viewWarnings_.push_back("no view sees the scene: the subdivision is view-independent");
 }
 
 bool RadiositySolve::step() {
@@ -57,6 +63,8 @@ SolveSummary RadiositySolve::summary() const {
   summary.elementsSplit = split_;
   summary.ignoredPolygons = solver_->ignoredPolygons();
   summary.energy = solver_->energyBalance();
+  summary.views = settings_.subdivision.views.size();
+  summary.viewWarnings = viewWarnings_;
   return summary;
 }
 

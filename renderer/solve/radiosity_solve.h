@@ -11,6 +11,8 @@
 
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace radview {
 
@@ -49,14 +51,19 @@ struct SolveSummary {
   size_t elementsSplit = 0;
   size_t ignoredPolygons = 0;
   EnergyBalance energy;
+  // The views the subdivision meshed for (SubdivisionCriteria::views), and a line for each view
+  // given that sees nothing of the scene from the front and was left out.
+  size_t views = 0;
+  std::vector<std::string> viewWarnings;
 };
 
 class RadiositySolve {
  public:
   enum class Phase { Shooting, Subdividing, Done };
 
-  // Meshes the scene (initialMesh) and sets up the shooting. Throws Error as
-  // ProgressiveRefinement does.
+  // Meshes the scene (initialMesh) and sets up the shooting. Views of the subdivision criteria
+  // that see no element's front side are left out (summary().viewWarnings says which); when none
+  // is left, the subdivision is view-independent. Throws Error as ProgressiveRefinement does.
   RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report = nullptr);
 
   // One shot while shooting, else one round of subdivision (the call that finds nothing left
@@ -75,6 +82,7 @@ class RadiositySolve {
   Phase phase_ = Phase::Shooting;
   int rounds_ = 0;
   size_t split_ = 0;
+  std::vector<std::string> viewWarnings_;
 };
 
 // Every step of a RadiositySolve; `report` (if set) after every shot and subdivision round.
