@@ -35,3 +35,15 @@ oblique="--camera 0.5,-0.6,1.1/0.5,0.5,0 --size 256x256"
   --out $out/discontinuities_clough_tocher.png
 "$radview" render assets/discontinuities.gltf --method clough-tocher --surface 0.25 \
   --camera 1.6,-0.9,1.1/0.5,0.5,0.1/0,0,1 --size 256x256 --out $out/discontinuities_surface.png
+
+# Meshing for the view (C&W 9.3): 1,000 elements for every view, and for the corner view only.
+corner="--camera 0.2,0.3,0.25/0.0,0.05,0.559 --size 384x288"
+solved=$(mktemp -d)
+trap 'rm -rf "$solved"' EXIT
+budget="--max-elements 1000 --tolerance 1 --min-element-size 0.00125"
+"$radview" solve assets/cornell_box.gltf -o "$solved/independent.glb" $budget >/dev/null
+"$radview" solve assets/cornell_box.gltf -o "$solved/corner.glb" $budget \
+  --view 0.2,0.3,0.25/0.0,0.05,0.559 --view-size 384x288 >/dev/null
+"$radview" render "$solved/independent.glb" --method gouraud --edges $corner --out $out/view_independent_corner.png
+"$radview" render "$solved/corner.glb" --method gouraud --edges $corner --out $out/view_driven_corner.png
+"$radview" render "$solved/corner.glb" --method gouraud --edges --size 288x288 --out $out/view_driven_whole.png

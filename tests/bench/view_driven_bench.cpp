@@ -4,8 +4,8 @@
 // EGL) and compared with one reference per view, the per-pixel final gather (eq. 9.9) over the
 // finest view-independent solution, as `radview bench` compares: display RMSE in 8-bit steps
 // over the pixels whose neighbours see the same plane. The table gives, for each view-driven
-// solve, the elements a view-independent solve needs for the same error, interpolated between
-// the sweep's solves in log(elements), log(error).
+// solve, the elements with which the view-independent solve first has the same error or less
+// (elementsForError).
 //   build/radview_view_bench [--size WxH] [--spp N] [--budgets 600,1000,2000] [--sweep 600,...,32000]
 //                            [--tolerance STEPS] [--view NAME=CAMERA]...
 #include "bench/image_error.h"
@@ -16,6 +16,7 @@
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "mesh/load_file.h"
+#include "mesh/uniform_mesher.h"
 #include "solve/radiosity_solve.h"
 
 #include <chrono>
@@ -82,16 +83,18 @@ struct Errors {
   double gouraud = 0.0, cloughTocher = 0.0;
 };
 
-// The elements at which the view-independent sweep reaches `target`, interpolated in
-// log(elements), log(error) between its two solves around it; 0 when none of them reaches it.
+// The elements with which the view-independent sweep first reaches `target`, interpolated in
+// log(elements), log(error) between its first solve that does and the one before; the first
+// solve's count if that one does, 0 if none does. The first, not the last crossing: the error
+// is not monotone in the element count (at small budgets a round of splits can add more
+// overshoot than it removes), and the first crossing never favours the view-driven solve.
 double elementsForError(const std::vector<Errors>& sweep, double Errors::*error, double target) {
   for (size_t i = 0; i < sweep.size(); ++i) {
     if (sweep[i].*error > target) continue;
     if (i == 0) return double(sweep[0].elements);
     const double x0 = std::log(double(sweep[i - 1].elements)), x1 = std::log(double(sweep[i].elements));
     const double y0 = std::log(sweep[i - 1].*error), y1 = std::log(sweep[i].*error);
-    const double t = y1 == y0 ? 1.0 : (std::log(target) - y0) / (y1 - y0);
-    return std::exp(x0 + t * (x1 - x0));
+    return std::exp(x0 + (std::log(target) - y0) / (y1 - y0) * (x1 - x0));
   }
   return 0.0;
 }
@@ -157,6 +160,13 @@ int main(int argc, char** argv) {
 
     std::printf("%s\nCornell box, %dx%d, tolerance %g steps, smallest element the patch size / 64\n",
                 context.description().c_str(), width, height, tolerance);
+    // How much of the scene each view sees: the patches (the initial mesh) with a pixel.
+    const RadiosityMesh patches = meshUniformly(scene, defaultPatchSize(scene));
+    for (const SolveView& view : views) {
+      size_t seen = 0;
+      for (uint32_t p : viewedPixels(patches, {view})) seen += p > 0;
+      std::printf("view '%s': %zu of the %zu patches in view\n", view.name.c_str(), seen, patches.elements.size());
+    }
     std::vector<Solved> independent;
     for (size_t budget : sweep) {
       independent.push_back(solve(scene, budget, tolerance, {}));
