@@ -12,17 +12,19 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
   const double F0 = shooter.unoccluded().from(x.position, x.normal);
   if (F0 == 0.0) return Value(0.0);
   if (!visibility) return F0 * meanB;
-  scratch.clear();
-  shooter.draw(stream, scratch);
+  if (scratch.size() < shooter.samples()) scratch.resize(shooter.samples());
+  shooter.draw(stream, scratch.data());
+  const AreaSample* const samples = scratch.data();
   const Vec3& N = shooter.normal();
   // The samples in front of both, with their kernel, and their rays cast together.
   thread_local std::vector<const AreaSample*> facing;
   thread_local std::vector<double> kernel;
-  thread_local std::vector<Segment> segments;
+  thread_local std::vector<Vec3> targets;
   thread_local std::vector<uint8_t> blocked;
-  facing.clear(), kernel.clear(), segments.clear();
+  facing.clear(), kernel.clear(), targets.clear();
   double all = 0.0;
-  for (const AreaSample& sample : scratch) {
+  for (size_t k = 0; k < shooter.samples(); ++k) {
+    const AreaSample& sample = samples[k];
     const Vec3 d = sample.position - x.position;
     const double r2 = glm::dot(d, d);
     const double K = sample.weight * std::max(0.0, glm::dot(x.normal, d)) * std::max(0.0, -glm::dot(N, d)) / (r2 * r2);
@@ -30,11 +32,11 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
     all += K;
     facing.push_back(&sample);
     kernel.push_back(K);
-    segments.push_back({x.position, x.normal, sample.position, N});
+    targets.push_back(sample.position);
   }
-  rays += segments.size();
-  blocked.resize(segments.size());
-  visibility->occluded(segments.data(), segments.size(), blocked.data());
+  rays += targets.size();
+  blocked.resize(targets.size());
+  visibility->occludedFrom(x.position, x.normal, targets.data(), targets.size(), N, blocked.data());
   Value seen(0.0);
   for (size_t i = 0; i < facing.size(); ++i)
     if (!blocked[i]) seen += kernel[i] * sampleB(*facing[i]);

@@ -49,13 +49,23 @@ PatchSampler::PatchSampler(const std::vector<std::vector<Vec3>>& polygons, int s
     // stratifies better than two triangles would.
     if (corners.size() == 4 && isStrictlyConvex(corners) &&
         planarityError(corners) <= 1e-6 * glm::distance(corners[0], corners[2])) {
-      pieces_.push_back(
-          {corners[0], corners[1], corners[2], corners[3], true, polygon, gridSide(radview::area(corners)), 0.0});
+      Piece piece{corners[0], corners[1], corners[2], corners[3], true, polygon, gridSide(radview::area(corners))};
+      // The Jacobian |dp/du x dp/dv| of a bilinear patch is linear in (u, v): the uv term of
+      // the cross product is (b - a - c + d) x (d - a - c + b), a vector crossed with itself.
+      // For a planar convex quad it is that vector's length along the normal; its values at
+      // three corners of the parameter square fix it.
+      const Vec3 n = unitNormal(corners);
+      const Vec3 ab = corners[1] - corners[0], ad = corners[3] - corners[0];
+      const double at00 = glm::dot(n, glm::cross(ab, ad));
+      const double at10 = glm::dot(n, glm::cross(ab, corners[2] - corners[1]));
+      const double at01 = glm::dot(n, glm::cross(corners[2] - corners[3], ad));
+      piece.jacobian = {at00, at10 - at00, at01 - at00};
+      pieces_.push_back(piece);
       continue;
     }
     for (const auto& t : triangulatePolygon(corners)) {
       const std::vector<Vec3> triangle = {corners[t[0]], corners[t[1]], corners[t[2]]};
-      Piece piece{triangle[0], triangle[1], triangle[2], Vec3(0.0), false, polygon, 1, 0.0};
+      Piece piece{triangle[0], triangle[1], triangle[2], Vec3(0.0), false, polygon, 1};
       piece.k = gridSide(radview::area(triangle));
       piece.weight = radview::area(triangle) / (piece.k * piece.k);
       pieces_.push_back(piece);
@@ -65,22 +75,31 @@ PatchSampler::PatchSampler(const std::vector<std::vector<Vec3>>& polygons, int s
 }
 
 void PatchSampler::draw(SampleStream& stream, std::vector<AreaSample>& out) const {
+  const size_t first = out.size();
+  out.resize(first + sampleCount_);
+  draw(stream, out.data() + first);
+}
+
+void PatchSampler::draw(SampleStream& stream, AreaSample* out) const {
+  size_t next = 0;
   for (const Piece& piece : pieces_) {
     const double cell = 1.0 / piece.k;
     for (int i = 0; i < piece.k; ++i)
       for (int j = 0; j < piece.k; ++j) {
         const double u = (i + stream.uniform()) * cell, v = (j + stream.uniform()) * cell;
+        AreaSample& sample = out[next++];
+        sample.polygon = piece.polygon;
         if (piece.quad) {
-          // Bilinear p(u, v); the weight is the Jacobian |dp/du x dp/dv| times the cell's area.
-          const Vec3 pu = (1.0 - v) * (piece.b - piece.a) + v * (piece.c - piece.d);
-          const Vec3 pv = (1.0 - u) * (piece.d - piece.a) + u * (piece.c - piece.b);
-          const Vec3 p = (1.0 - v) * ((1.0 - u) * piece.a + u * piece.b) + v * ((1.0 - u) * piece.d + u * piece.c);
-          out.push_back({p, glm::length(glm::cross(pu, pv)) * cell * cell, piece.polygon});
+          // Bilinear p(u, v); the weight is the Jacobian times the cell's area.
+          sample.position = (1.0 - v) * ((1.0 - u) * piece.a + u * piece.b) + v * ((1.0 - u) * piece.d + u * piece.c);
+          const Vec3& J = piece.jacobian;
+          sample.weight = (J.x + J.y * u + J.z * v) * cell * cell;
         } else {
           // The area-preserving map of the unit square onto a triangle (Shirley 1990):
           // equal cells map to equal areas, so each sample weighs area / k^2.
           const double s = std::sqrt(u);
-          out.push_back({(1.0 - s) * piece.a + s * (1.0 - v) * piece.b + s * v * piece.c, piece.weight, piece.polygon});
+          sample.position = (1.0 - s) * piece.a + s * (1.0 - v) * piece.b + s * v * piece.c;
+          sample.weight = piece.weight;
         }
       }
   }

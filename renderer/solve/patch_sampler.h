@@ -51,6 +51,9 @@ class PatchSampler {
   size_t samples() const { return sampleCount_; }
   // Appends samples() jittered samples, one per grid cell of every piece.
   void draw(SampleStream& stream, std::vector<AreaSample>& out) const;
+  // The same samples written to out[0 .. samples()), for a caller that keeps a buffer of that
+  // size: the solver draws for every node and shot.
+  void draw(SampleStream& stream, AreaSample* out) const;
 
  private:
   struct Piece {
@@ -59,6 +62,7 @@ class PatchSampler {
     uint32_t polygon = 0;
     int k = 1;            // k x k grid
     double weight = 0.0;  // triangle: area / k^2 (the map below preserves area)
+    Vec3 jacobian{0.0};   // quad: |dp/du x dp/dv| = x + y u + z v
   };
   PatchFormFactor unoccluded_;
   std::vector<Piece> pieces_;

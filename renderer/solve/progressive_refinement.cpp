@@ -6,7 +6,6 @@
 #include "solve/element_to_node.h"
 #include "solve/shooting_patches.h"
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -162,7 +161,9 @@ bool ProgressiveRefinement::step() {
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<Rgb> deltaH(mesh_.nodes.size(), Rgb(0.0));
-  std::atomic<uint64_t> rays{0};
+  // Rays counted per node and summed afterwards: one counter shared by the threads would be
+  // written from every core for every node, and its cache line would bounce between them.
+  std::vector<uint32_t> rays(mesh_.nodes.size(), 0);
   parallelFor(
       mesh_.nodes.size(),
       [&](size_t node) {
@@ -170,11 +171,11 @@ bool ProgressiveRefinement::step() {
         size_t cast = 0;
         deltaH[node] = gathered(node, shot, cast, scratch);
         H_[node] += deltaH[node];
-        rays += cast;
+        rays[node] = uint32_t(cast);
       },
       32);
   progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress_.rays += rays;
+  for (uint32_t cast : rays) progress_.rays += cast;
 
   // Cohen et al. 1986 substructuring: what the elements received, area-weighted, is the new
   // unshot radiosity (times rho) of the initial element they lie in. Serial, in element order:
@@ -205,7 +206,7 @@ void ProgressiveRefinement::updateUnshotFraction() {
 
 void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
   const auto start = std::chrono::steady_clock::now();
-  std::atomic<uint64_t> rays{0};
+  std::vector<uint64_t> rays(mesh_.nodes.size() - firstNode, 0);  // per node, as in step()
   parallelFor(
       mesh_.nodes.size() - firstNode,
       [&](size_t i) {
@@ -215,11 +216,11 @@ void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
         Rgb H(0.0);
         for (size_t shot = 0; shot < history_.size(); ++shot) H += gathered(node, shot, cast, scratch);
         H_[node] = H;
-        rays += cast;
+        rays[i] = cast;
       },
       4);
   progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  progress_.rays += rays;
+  for (uint64_t cast : rays) progress_.rays += cast;
 }
 
 size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {

@@ -84,9 +84,13 @@ RayCaster::~RayCaster() = default;
 
 void* RayCaster::embreeScene() const { return embree_->scene; }
 
+Vec3 RayCaster::toEmbree(const Vec3& point, const Vec3& liftNormal) const {
+  return (point - center_) * scale_ + kLift * liftNormal;
+}
+
 void RayCaster::embreeRay(const Segment& segment, float origin[3], float direction[3], float& tfar) const {
-  const Vec3 from = (segment.from - center_) * scale_ + kLift * segment.fromNormal;
-  const Vec3 to = (segment.to - center_) * scale_ + kLift * segment.toNormal;
+  const Vec3 from = toEmbree(segment.from, segment.fromNormal);
+  const Vec3 to = toEmbree(segment.to, segment.toNormal);
   const Vec3 d = to - from;
   for (int k = 0; k < 3; ++k) {
     origin[k] = float(from[k]);
@@ -95,40 +99,55 @@ void RayCaster::embreeRay(const Segment& segment, float origin[3], float directi
   tfar = 1.0f;
 }
 
+namespace {
+
+void setOccludedRay(RTCRay& ray, const Vec3& from, const Vec3& to, unsigned id) {
+  const Vec3 d = to - from;
+  ray.org_x = float(from.x), ray.org_y = float(from.y), ray.org_z = float(from.z);
+  ray.dir_x = float(d.x), ray.dir_y = float(d.y), ray.dir_z = float(d.z);
+  ray.tnear = 0.0f;
+  ray.tfar = 1.0f;
+  ray.time = 0.0f;
+  ray.mask = ~0u;
+  ray.id = id;
+  ray.flags = 0;
+}
+
+// One coherent stream through rtcOccluded1M; Embree marks an occluded ray by setting tfar to
+// -infinity.
+void castOccludedStream(RTCScene scene, std::vector<RTCRay>& rays, uint8_t* blocked) {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  rtcOccluded1M(scene, &context, rays.data(), unsigned(rays.size()), sizeof(RTCRay));
+  for (size_t i = 0; i < rays.size(); ++i) blocked[i] = rays[i].tfar < 0.0f ? 1 : 0;
+}
+
+}  // namespace
+
 void RayCaster::occluded(const Segment* segments, size_t count, uint8_t* blocked) const {
   if (count == 0) return;
   thread_local std::vector<RTCRay> rays;
   rays.resize(count);
-  for (size_t i = 0; i < count; ++i) {
-    float origin[3], direction[3];
-    RTCRay& ray = rays[i];
-    embreeRay(segments[i], origin, direction, ray.tfar);
-    ray.org_x = origin[0], ray.org_y = origin[1], ray.org_z = origin[2];
-    ray.dir_x = direction[0], ray.dir_y = direction[1], ray.dir_z = direction[2];
-    ray.tnear = 0.0f;
-    ray.time = 0.0f;
-    ray.mask = ~0u;
-    ray.id = unsigned(i);
-    ray.flags = 0;
-  }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-  rtcOccluded1M(embree_->scene, &context, rays.data(), unsigned(count), sizeof(RTCRay));
-  for (size_t i = 0; i < count; ++i) blocked[i] = rays[i].tfar < 0.0f ? 1 : 0;
+  for (size_t i = 0; i < count; ++i)
+    setOccludedRay(rays[i], toEmbree(segments[i].from, segments[i].fromNormal),
+                   toEmbree(segments[i].to, segments[i].toNormal), unsigned(i));
+  castOccludedStream(embree_->scene, rays, blocked);
+}
+
+void RayCaster::occludedFrom(const Vec3& from, const Vec3& fromNormal, const Vec3* to, size_t count,
+                             const Vec3& toNormal, uint8_t* blocked) const {
+  if (count == 0) return;
+  thread_local std::vector<RTCRay> rays;
+  rays.resize(count);
+  const Vec3 origin = toEmbree(from, fromNormal);
+  for (size_t i = 0; i < count; ++i) setOccludedRay(rays[i], origin, toEmbree(to[i], toNormal), unsigned(i));
+  castOccludedStream(embree_->scene, rays, blocked);
 }
 
 bool RayCaster::occluded(const Segment& segment) const {
-  float origin[3], direction[3];
   RTCRay ray;
-  embreeRay(segment, origin, direction, ray.tfar);
-  ray.org_x = origin[0], ray.org_y = origin[1], ray.org_z = origin[2];
-  ray.dir_x = direction[0], ray.dir_y = direction[1], ray.dir_z = direction[2];
-  ray.tnear = 0.0f;
-  ray.time = 0.0f;
-  ray.mask = ~0u;
-  ray.id = 0;
-  ray.flags = 0;
+  setOccludedRay(ray, toEmbree(segment.from, segment.fromNormal), toEmbree(segment.to, segment.toNormal), 0);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcOccluded1(embree_->scene, &context, &ray);

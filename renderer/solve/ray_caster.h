@@ -56,6 +56,11 @@ class RayCaster {
   // Embree for all of them, traced as a coherent stream (the rays from one point to one patch
   // are nearly parallel, so they share most of their traversal). Thread-safe.
   void occluded(const Segment* segments, size_t count, uint8_t* blocked) const;
+  // The same for the segments from one point to each of `to[0 .. count)`, all ends facing
+  // `toNormal` (a receiving node to the samples of a planar patch): the rays and the answers
+  // are those of the Segment stream, without a Segment per ray.
+  void occludedFrom(const Vec3& from, const Vec3& fromNormal, const Vec3* to, size_t count, const Vec3& toNormal,
+                    uint8_t* blocked) const;
 
   // The nearest polygon along the ray, if any. Thread-safe.
   std::optional<RayHit> closestHit(const Ray& ray) const;
@@ -75,6 +80,9 @@ class RayCaster {
 
  private:
   struct Embree;
+  // A point in Embree's frame, lifted by kLift along `liftNormal`.
+  Vec3 toEmbree(const Vec3& point, const Vec3& liftNormal) const;
+
   std::unique_ptr<Embree> embree_;
   Vec3 center_{0.0};
   double scale_ = 1.0;                     // world -> Embree: (p - center_) * scale_

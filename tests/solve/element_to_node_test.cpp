@@ -7,6 +7,7 @@
 #include "solve/form_factor.h"
 
 #include <gtest/gtest.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
 #include <functional>
@@ -180,6 +181,39 @@ TEST(ElementToNodeTest, SamplerWeightsSumToTheArea) {
     double sum = 0.0;
     for (const AreaSample& s : samples) sum += s.weight;
     EXPECT_NEAR(sum, area(polygon), 0.02 * area(polygon));
+  }
+}
+
+// A quad's sample weighs its cell's area times the bilinear map's Jacobian |dp/du x dp/dv| at
+// the sample, which the sampler evaluates as a linear function of (u, v): checked against the
+// cross product itself, at each sample's (u, v) found again by Newton's method, on a tilted
+// trapezoid whose Jacobian varies by a factor of 3 across it.
+TEST(ElementToNodeTest, QuadSampleWeightsAreTheBilinearJacobian) {
+  const glm::dmat3 tilt = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(Vec3(1, 2, 3))));
+  const Vec3 a = tilt * Vec3(0, 0, 0), b = tilt * Vec3(3, 0, 0), c = tilt * Vec3(2, 1, 0), d = tilt * Vec3(1, 1, 0);
+  const PatchSampler sampler({a, b, c, d}, 16);
+  ASSERT_EQ(sampler.samples(), 16u);
+  const double cell = 1.0 / 4.0;
+  SampleStream stream(3);
+  std::vector<AreaSample> samples;
+  sampler.draw(stream, samples);
+  auto at = [&](double u, double v) { return (1 - v) * ((1 - u) * a + u * b) + v * ((1 - u) * d + u * c); };
+  for (const AreaSample& sample : samples) {
+    double u = 0.5, v = 0.5;
+    Vec3 pu(0.0), pv(0.0);
+    for (int iteration = 0; iteration < 20; ++iteration) {
+      pu = (1 - v) * (b - a) + v * (c - d);
+      pv = (1 - u) * (d - a) + u * (c - b);
+      const Vec3 r = sample.position - at(u, v);
+      // Least squares step: [pu pv]^T [pu pv] (du, dv) = [pu pv]^T r.
+      const double A = glm::dot(pu, pu), B = glm::dot(pu, pv), C = glm::dot(pv, pv);
+      const double det = A * C - B * B, ru = glm::dot(pu, r), rv = glm::dot(pv, r);
+      u += (C * ru - B * rv) / det;
+      v += (A * rv - B * ru) / det;
+    }
+    ASSERT_LT(glm::distance(at(u, v), sample.position), 1e-12);
+    const double jacobian = glm::length(glm::cross(pu, pv));
+    EXPECT_NEAR(sample.weight, jacobian * cell * cell, 1e-12) << "at (" << u << ", " << v << ")";
   }
 }
 
