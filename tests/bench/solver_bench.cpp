@@ -5,7 +5,8 @@
 //    segments that shot casts, in the same frame), on both cores, and EmbreeOccluded1M: the same
 //    rays as the solver casts them, each node's in one coherent stream;
 //  - SolveTime/N: a whole solve with `radview solve`'s defaults (patches of diagonal / 12, to
-//    1 % unshot; meshing included), subdivision up to N elements.
+//    1 % unshot; meshing included), subdivision up to N elements (tolerance 1 step, smallest
+//    element the patch size / 64, so that the cap stops it).
 //   build/radview_solver_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 #include "core/parallel_for.h"
 #include "geom/polygon.h"
@@ -166,6 +167,9 @@ void SolveTime(benchmark::State& state) {
   Fixture& f = fixture();
   SolveSettings settings;
   settings.subdivision.maxElements = size_t(state.range(0));
+  // Fine enough a tolerance and a smallest element that the cap is what stops subdivision.
+  settings.subdivision.tolerance = 1.0;
+  settings.subdivision.minElementSize = defaultPatchSize(f.scene) / 64.0;
   SolveSummary summary;
   for (auto _ : state) {
     const RadiosityMesh mesh = solveRadiosity(f.scene, settings, summary);
@@ -181,10 +185,11 @@ BENCHMARK(EmbreeOccluded1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(EmbreeOccluded1M)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(SolveTime)
     ->Arg(1000)
-    ->Arg(2000)
     ->Arg(4000)
-    ->Arg(8000)
     ->Arg(16000)
+    ->Arg(32000)
+    ->Arg(64000)
+    ->Arg(100000)
     ->Unit(benchmark::kSecond)
     ->Iterations(1)
     ->UseRealTime();
