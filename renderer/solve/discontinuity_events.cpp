@@ -89,15 +89,39 @@ bool planeContainsEdgeAt(const Vec3& n, const std::vector<Vec3>& ring, size_t i)
 }
 
 // Collects the clipped pieces of one event segment (3D, on the receiver's plane) on it.
+// A wedge event's generator (Heckbert 1992): the critical line through a receiver point x runs
+// from a point s of the emitter through a point q of the occluder. EV: s is the emitter vertex
+// and q on the occluder edge; VE: q is the occluder vertex and s on the emitter edge.
+struct Wedge {
+  bool emitterVertex = true;
+  Vec3 fixed{0.0}, edge0{0.0}, edge1{0.0};
+  Vec3 emitterNormal{0.0};
+};
+
+// The point of the line through a and b nearest to the line p + t d (where the two meet, for
+// lines in one plane).
+Vec3 pointOnLineNearest(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3& d) {
+  const Vec3 e = b - a, w = a - p;
+  const double dd = glm::dot(d, d), de = glm::dot(d, e), ee = glm::dot(e, e);
+  const double denominator = dd * ee - de * de;
+  if (!(std::abs(denominator) > 1e-300)) return a;
+  return a + ((de * glm::dot(d, w) - dd * glm::dot(e, w)) / denominator) * e;
+}
+
 class ReceiverEvents {
  public:
-  ReceiverEvents(const PolygonGeometry& receiver, std::vector<EventSegment>& out, EventCounts& counts)
-      : receiver_(receiver), out_(out), counts_(counts) {}
+  ReceiverEvents(const PolygonGeometry& receiver, std::vector<EventSegment>& out, EventCounts& counts,
+                 const CriticalLineTest* criticalLines)
+      : receiver_(receiver), out_(out), counts_(counts), criticalLines_(criticalLines) {}
 
-  void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order) {
+  void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order, const Wedge* wedge = nullptr) {
     ++counts_.found[int(kind)];
     const Vec2 a = receiver_.frame.project(x0), b = receiver_.frame.project(x1);
-    const auto pieces = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
+    std::vector<ParameterInterval> pieces = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
+    if (wedge && criticalLines_ && !pieces.empty()) {
+      pieces = clearParts(a, b, pieces, *wedge);
+      if (pieces.empty()) ++counts_.wedgesHidden;
+    }
     if (pieces.empty()) return;
     ++counts_.inserted[int(kind)];
     for (const ParameterInterval& piece : pieces)
@@ -105,9 +129,41 @@ class ReceiverEvents {
   }
 
  private:
+  // Whether the wedge's critical line is clear at the receiver point a + t (b - a).
+  bool clearAt(const Vec2& a, const Vec2& b, double t, const Wedge& wedge) const {
+    const PlaneFrame& f = receiver_.frame;
+    const Vec2 p = a + t * (b - a);
+    const Vec3 x = f.origin + p.x * f.u + p.y * f.v;
+    const Vec3 q = wedge.emitterVertex ? pointOnLineNearest(wedge.edge0, wedge.edge1, x, wedge.fixed - x) : wedge.fixed;
+    const Vec3 s = wedge.emitterVertex ? wedge.fixed : pointOnLineNearest(wedge.edge0, wedge.edge1, x, q - x);
+    return criticalLines_->clear(x, f.n, q, s, wedge.emitterNormal);
+  }
+
+  // The pieces whose critical line is clear somewhere: each piece is tested at
+  // kCriticalLineSamples points and left out when every one is blocked. A piece hidden only in
+  // part is kept whole: cutting it where the line becomes blocked would end it on the edge
+  // that blocks it (typically where an occluder meets the receiver, a C-1 contact), and an
+  // endpoint within snapping distance of a C-1 line breaks the split of nodes along it.
+  std::vector<ParameterInterval> clearParts(const Vec2& a, const Vec2& b, const std::vector<ParameterInterval>& pieces,
+                                            const Wedge& wedge) {
+    std::vector<ParameterInterval> clear;
+    for (const ParameterInterval& piece : pieces) {
+      const double step = (piece.t1 - piece.t0) / kCriticalLineSamples;
+      bool anyClear = false;
+      for (int k = 0; k < kCriticalLineSamples && !anyClear; ++k)
+        anyClear = clearAt(a, b, piece.t0 + (k + 0.5) * step, wedge);
+      if (anyClear)
+        clear.push_back(piece);
+      else
+        ++counts_.hiddenParts;
+    }
+    return clear;
+  }
+
   const PolygonGeometry& receiver_;
   std::vector<EventSegment>& out_;
   EventCounts& counts_;
+  const CriticalLineTest* criticalLines_;
 };
 
 // D0: where `other` touches or passes through the receiver's plane, inside `other` (Heckbert
@@ -182,6 +238,8 @@ bool shadowMissesReceiver(const PolygonGeometry& receiver, const std::vector<Vec
 // The EV and VE wedges of one (emitter, occluder, receiver) triple that is not culled.
 void wedgeEvents(const std::vector<Vec3>& E, const PolygonGeometry& emitter, const std::vector<Vec3>& O,
                  const PolygonGeometry& receiver, ReceiverEvents& events) {
+  Wedge wedge;
+  wedge.emitterNormal = emitter.frame.n;
   const double tolR = receiver.tolerance, tolE = emitter.tolerance;
   std::vector<double> hE(E.size()), hO(O.size()), hOE(O.size());
   for (size_t i = 0; i < E.size(); ++i) hE[i] = receiver.height(E[i]);
@@ -211,7 +269,9 @@ void wedgeEvents(const std::vector<Vec3>& E, const PolygonGeometry& emitter, con
         return projectFrom(E[i], hE[i], q, std::max(0.0, receiver.height(q)));
       };
       const bool d1 = planeContainsEdgeAt(glm::normalize(normal), E, i);
-      events.add(at(t0), at(t1), EventKind::EmitterVertexOccluderEdge, d1 ? Continuity::C0 : Continuity::C1);
+      wedge.emitterVertex = true;
+      wedge.fixed = E[i], wedge.edge0 = O[j], wedge.edge1 = O[k];
+      events.add(at(t0), at(t1), EventKind::EmitterVertexOccluderEdge, d1 ? Continuity::C0 : Continuity::C1, &wedge);
     }
   }
 
@@ -233,7 +293,9 @@ void wedgeEvents(const std::vector<Vec3>& E, const PolygonGeometry& emitter, con
         return projectFrom(p, receiver.height(p), O[j], hO[j]);
       };
       const bool d1 = planeContainsEdgeAt(glm::normalize(normal), O, j);
-      events.add(at(t0), at(t1), EventKind::OccluderVertexEmitterEdge, d1 ? Continuity::C0 : Continuity::C1);
+      wedge.emitterVertex = false;
+      wedge.fixed = O[j], wedge.edge0 = E[i], wedge.edge1 = E[k];
+      events.add(at(t0), at(t1), EventKind::OccluderVertexEmitterEdge, d1 ? Continuity::C0 : Continuity::C1, &wedge);
     }
   }
 }
@@ -306,7 +368,8 @@ std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b
   return inside;
 }
 
-std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts) {
+std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts,
+                                                               const CriticalLineTest* criticalLines) {
   const size_t n = scene.polygons.size();
   std::vector<PolygonGeometry> geometry;
   geometry.reserve(n);
@@ -320,7 +383,7 @@ std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scen
   for (size_t r = 0; r < n; ++r) {
     const PolygonGeometry& receiver = geometry[r];
     if (!receiver.valid || isEmitter(r)) continue;
-    ReceiverEvents events(receiver, segments[r], counts);
+    ReceiverEvents events(receiver, segments[r], counts, criticalLines);
     const std::vector<Vec3>& R = scene.polygons[r].vertices;
 
     // D0: every other polygon (emitters too) whose bounding box reaches the receiver's.

@@ -40,6 +40,19 @@ struct EventCounts {
   size_t inserted[3] = {0, 0, 0};  // per EventKind: left at least one segment on the receiver
   size_t triplesCulled = 0;        // (emitter, occluder, receiver) triples that cannot shadow
   size_t triplesKept = 0;
+  // Wedge pieces on a receiver that other occluders hide (CriticalLineTest), left out: the
+  // pieces removed, and the wedges of which nothing was left.
+  size_t hiddenParts = 0, wedgesHidden = 0;
+};
+
+// Whether the critical line of a wedge event is clear at one receiver point: the line from the
+// point x on the receiver (whose lit side faces xNormal) through the occluder's vertex or edge
+// point q to the emitter's point s (on its side facing sNormal). Where something else blocks
+// it, the emitter's visible part does not change its structure there, and the wedge is no
+// discontinuity (Lischinski, Tampieri, Greenberg 1992: only unoccluded wedge parts count).
+struct CriticalLineTest {
+  virtual ~CriticalLineTest() = default;
+  virtual bool clear(const Vec3& x, const Vec3& xNormal, const Vec3& q, const Vec3& s, const Vec3& sNormal) const = 0;
 };
 
 // A relative tolerance: lengths below this times a polygon's size count as zero, points this
@@ -54,8 +67,12 @@ constexpr double kEventTolerance = 1e-7;
 // behind the emitter's plane, entirely behind the receiver's plane, not below every emitter
 // vertex (measured from the receiver), not nearer the emitter than some receiver point; or
 // whose shadow's bounding box (vertices projected from emitter vertices) misses the
-// receiver's. Parts of a wedge hidden by other occluders are kept (not computed).
-std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts);
+// receiver's. With `criticalLines`, a piece of a wedge (EV or VE) on the receiver whose critical
+// line is blocked at each of kCriticalLineSamples points along it is left out; a piece hidden
+// only in part is kept whole. Without it every piece is kept.
+std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts,
+                                                               const CriticalLineTest* criticalLines = nullptr);
+constexpr int kCriticalLineSamples = 32;
 
 // The parts of segment a-b inside a polygon (any simple polygon, concave included), as
 // parameter intervals [t0, t1] of a + t (b - a), sorted; parts within `tolerance` of the

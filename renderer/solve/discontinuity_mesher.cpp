@@ -4,6 +4,7 @@
 #include "geom/constrained_mesh_cgal.h"
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"
+#include "solve/critical_lines.h"
 #include "solve/discontinuity_events.h"
 #include "solve/discontinuity_segments.h"
 
@@ -126,7 +127,10 @@ RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, Di
   DiscontinuityMeshReport& r = report ? *report : local;
   r = DiscontinuityMeshReport();
   EventCounts counts;
-  const std::vector<std::vector<EventSegment>> events = findDiscontinuityEvents(scene, counts);
+  const CriticalLinesByRays criticalLines(scene);
+  const std::vector<std::vector<EventSegment>> events = findDiscontinuityEvents(scene, counts, &criticalLines);
+  r.hiddenParts = counts.hiddenParts;
+  r.wedgesHidden = counts.wedgesHidden;
   r.contactEvents = counts.found[int(EventKind::Contact)];
   r.emitterVertexEvents = counts.found[int(EventKind::EmitterVertexOccluderEdge)];
   r.occluderVertexEvents = counts.found[int(EventKind::OccluderVertexEmitterEdge)];
@@ -176,6 +180,8 @@ std::ostream& operator<<(std::ostream& os, const DiscontinuityMeshReport& r) {
   os << "discontinuity meshing: " << r.eventsFound << " events found (" << r.contactEvents << " D0 contacts, "
      << r.emitterVertexEvents << " EV, " << r.occluderVertexEvents << " VE), " << r.eventsInserted << " inserted; "
      << r.occludersSkipped << " (emitter, occluder, receiver) triples culled, " << r.occludersKept << " kept\n"
+     << "  wedge pieces hidden by other occluders, left out: " << r.hiddenParts << " (" << r.wedgesHidden
+     << " wedges wholly)\n"
      << "  " << r.segmentsInserted << " segments (C-1 " << r.segmentsCm1 << ", C0 " << r.segmentsC0 << ", C1 "
      << r.segmentsC1 << ")";
   if (r.segmentsDropped > 0) os << ", " << r.segmentsDropped << " dropped past the per-polygon cap";

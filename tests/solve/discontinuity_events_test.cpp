@@ -4,6 +4,7 @@
 
 #include "geom/polygon.h"
 #include "mesh/topology.h"
+#include "solve/critical_lines.h"
 #include "solve/discontinuity_mesher.h"
 
 #include "tests/test_print.h"
@@ -40,6 +41,35 @@ Scene squaresScene(double a, double h, double b, double o, double angle = 0.0) {
   scene.polygons.push_back({square(a, h, false), 1});
   scene.polygons.push_back({square(b, o, true, angle), 0});
   return scene;
+}
+
+// A small square in the umbra of a larger one (the emitter's light reaches no point of it)
+// casts wedges on the floor whose critical lines all pass through the larger square: with the
+// critical-line test they are left out, and the floor has exactly the events of the larger
+// square alone; without it they are there.
+TEST(DiscontinuityEventsTest, WedgesHiddenByAnotherOccluderAreLeftOut) {
+  Scene withSmall = squaresScene(1.0, 3.0, 2.0, 2.0);  // the emitter at 3, a blocker of side 2 at 2
+  const Scene blockerOnly = withSmall;
+  withSmall.polygons.push_back({square(0.4, 1.0, true, 0.3), 0});  // the small square at 1, turned
+  const CriticalLinesByRays lines(withSmall);
+  EventCounts filtered, unfiltered, alone;
+  const auto hidden = findDiscontinuityEvents(withSmall, filtered, &lines);
+  const auto all = findDiscontinuityEvents(withSmall, unfiltered);
+  const auto reference = findDiscontinuityEvents(blockerOnly, alone);
+  EXPECT_GT(all[0].size(), reference[0].size());
+  ASSERT_EQ(hidden[0].size(), reference[0].size());
+  for (size_t i = 0; i < hidden[0].size(); ++i) {
+    EXPECT_EQ(hidden[0][i].a, reference[0][i].a);
+    EXPECT_EQ(hidden[0][i].b, reference[0][i].b);
+  }
+  EXPECT_EQ(filtered.hiddenParts, all[0].size() - reference[0].size());
+  EXPECT_GT(filtered.wedgesHidden, 0u);
+  // The blocker's own wedges are clear: the test leaves the scene without the small square as
+  // it is.
+  EventCounts blockerFiltered;
+  const CriticalLinesByRays blockerLines(blockerOnly);
+  EXPECT_EQ(findDiscontinuityEvents(blockerOnly, blockerFiltered, &blockerLines)[0].size(), reference[0].size());
+  EXPECT_EQ(blockerFiltered.hiddenParts, 0u);
 }
 
 // square() puts corners on the diagonals: side s gives corners at (+-s/2, +-s/2).
