@@ -139,25 +139,61 @@ class ReceiverEvents {
     return criticalLines_->clear(x, f.n, q, s, wedge.emitterNormal);
   }
 
-  // The pieces whose critical line is clear somewhere: each piece is tested at
-  // kCriticalLineSamples points and left out when every one is blocked. A piece hidden only in
-  // part is kept whole: cutting it where the line becomes blocked would end it on the edge
-  // that blocks it (typically where an occluder meets the receiver, a C-1 contact), and an
-  // endpoint within snapping distance of a C-1 line breaks the split of nodes along it.
+  // The parts of the pieces whose critical line is clear. Each piece is tested at
+  // kCriticalLineSamples points; a piece blocked at every one is left out, one blocked at some
+  // is cut where the answer changes between neighbouring samples (found by bisection), and the
+  // ends beyond the first and last samples follow them. A cut end lies on what blocks the line
+  // (typically another occluder's footprint or shadow edge on this receiver); arrangeSegments
+  // puts it exactly on that segment when it is one.
   std::vector<ParameterInterval> clearParts(const Vec2& a, const Vec2& b, const std::vector<ParameterInterval>& pieces,
                                             const Wedge& wedge) {
     std::vector<ParameterInterval> clear;
+    const double length = glm::distance(a, b);
     for (const ParameterInterval& piece : pieces) {
       const double step = (piece.t1 - piece.t0) / kCriticalLineSamples;
-      bool anyClear = false;
-      for (int k = 0; k < kCriticalLineSamples && !anyClear; ++k)
-        anyClear = clearAt(a, b, piece.t0 + (k + 0.5) * step, wedge);
-      if (anyClear)
-        clear.push_back(piece);
-      else
+      auto sample = [&](int k) { return piece.t0 + (k + 0.5) * step; };
+      bool previous = clearAt(a, b, sample(0), wedge);
+      bool anyClear = previous, anyBlocked = !previous;
+      double start = piece.t0;
+      const size_t before = clear.size();
+      for (int k = 1; k < kCriticalLineSamples; ++k) {
+        const bool now = clearAt(a, b, sample(k), wedge);
+        if (now != previous) {
+          const double change = transition(a, b, sample(k - 1), sample(k), previous, wedge);
+          if (previous)
+            keep(clear, start, change, length);
+          else
+            start = change;
+        }
+        anyClear |= now;
+        anyBlocked |= !now;
+        previous = now;
+      }
+      if (previous) keep(clear, start, piece.t1, length);
+      if (!anyClear || clear.size() == before)
         ++counts_.hiddenParts;
+      else if (anyBlocked)
+        ++counts_.partsCut;
     }
     return clear;
+  }
+
+  // Where the line's answer changes between parameters t and u (clear at t when `clearAtT`):
+  // bisection to a millionth of the sample spacing, the midpoint of the last bracket.
+  double transition(const Vec2& a, const Vec2& b, double t, double u, bool clearAtT, const Wedge& wedge) const {
+    for (int k = 0; k < 20; ++k) {
+      const double middle = 0.5 * (t + u);
+      if (clearAt(a, b, middle, wedge) == clearAtT)
+        t = middle;
+      else
+        u = middle;
+    }
+    return 0.5 * (t + u);
+  }
+
+  // Appends [t0, t1] unless it is shorter than the receiver's tolerance.
+  void keep(std::vector<ParameterInterval>& parts, double t0, double t1, double length) const {
+    if ((t1 - t0) * length > receiver_.tolerance) parts.push_back({t0, t1});
   }
 
   const PolygonGeometry& receiver_;

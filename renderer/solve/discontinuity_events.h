@@ -40,9 +40,10 @@ struct EventCounts {
   size_t inserted[3] = {0, 0, 0};  // per EventKind: left at least one segment on the receiver
   size_t triplesCulled = 0;        // (emitter, occluder, receiver) triples that cannot shadow
   size_t triplesKept = 0;
-  // Wedge pieces on a receiver that other occluders hide (CriticalLineTest), left out: the
-  // pieces removed, and the wedges of which nothing was left.
-  size_t hiddenParts = 0, wedgesHidden = 0;
+  // Wedge pieces on a receiver that other occluders hide (CriticalLineTest): the pieces left
+  // out, the wedges of which nothing was left, and the pieces hidden in part, cut to their
+  // clear parts.
+  size_t hiddenParts = 0, wedgesHidden = 0, partsCut = 0;
 };
 
 // Whether the critical line of a wedge event is clear at one receiver point: the line from the
@@ -68,8 +69,8 @@ constexpr double kEventTolerance = 1e-7;
 // vertex (measured from the receiver), not nearer the emitter than some receiver point; or
 // whose shadow's bounding box (vertices projected from emitter vertices) misses the
 // receiver's. With `criticalLines`, a piece of a wedge (EV or VE) on the receiver whose critical
-// line is blocked at each of kCriticalLineSamples points along it is left out; a piece hidden
-// only in part is kept whole. Without it every piece is kept.
+// line is blocked at each of kCriticalLineSamples points along it is left out, and one blocked
+// at some of them is cut to its clear parts. Without it every piece is kept whole.
 std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts,
                                                                const CriticalLineTest* criticalLines = nullptr);
 constexpr int kCriticalLineSamples = 32;

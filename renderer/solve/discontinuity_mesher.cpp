@@ -131,6 +131,7 @@ RadiosityMesh meshWithDiscontinuities(const Scene& scene, double elementSize, Di
   const std::vector<std::vector<EventSegment>> events = findDiscontinuityEvents(scene, counts, &criticalLines);
   r.hiddenParts = counts.hiddenParts;
   r.wedgesHidden = counts.wedgesHidden;
+  r.partsCut = counts.partsCut;
   r.contactEvents = counts.found[int(EventKind::Contact)];
   r.emitterVertexEvents = counts.found[int(EventKind::EmitterVertexOccluderEdge)];
   r.occluderVertexEvents = counts.found[int(EventKind::OccluderVertexEmitterEdge)];
@@ -181,7 +182,7 @@ std::ostream& operator<<(std::ostream& os, const DiscontinuityMeshReport& r) {
      << r.emitterVertexEvents << " EV, " << r.occluderVertexEvents << " VE), " << r.eventsInserted << " inserted; "
      << r.occludersSkipped << " (emitter, occluder, receiver) triples culled, " << r.occludersKept << " kept\n"
      << "  wedge pieces hidden by other occluders, left out: " << r.hiddenParts << " (" << r.wedgesHidden
-     << " wedges wholly)\n"
+     << " wedges wholly); hidden in part, cut: " << r.partsCut << "\n"
      << "  " << r.segmentsInserted << " segments (C-1 " << r.segmentsCm1 << ", C0 " << r.segmentsC0 << ", C1 "
      << r.segmentsC1 << ")";
   if (r.segmentsDropped > 0) os << ", " << r.segmentsDropped << " dropped past the per-polygon cap";

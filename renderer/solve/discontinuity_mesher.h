@@ -18,9 +18,9 @@ struct DiscontinuityMeshReport {
   size_t segmentsInserted = 0;  // constraint segments after clipping and merging collinear ones
   size_t occludersSkipped = 0;  // (emitter, occluder, receiver) triples culled
   size_t occludersKept = 0;     // triples whose wedges were computed
-  // Wedge pieces whose critical line other occluders block, left out (discontinuity_events.h):
-  // the pieces removed, and the wedges of which nothing was left.
-  size_t hiddenParts = 0, wedgesHidden = 0;
+  // Wedge pieces whose critical line other occluders block (discontinuity_events.h): the
+  // pieces left out, the wedges of which nothing was left, the pieces cut to their clear parts.
+  size_t hiddenParts = 0, wedgesHidden = 0, partsCut = 0;
   // Found per kind: D0 contacts, EV wedges, VE wedges.
   size_t contactEvents = 0, emitterVertexEvents = 0, occluderVertexEvents = 0;
   // segmentsInserted by order: C-1 (D0), C0 (D1), C1 (D2, inserted untagged).

@@ -147,6 +147,35 @@ void splitIfOn(Line& line, int id, const Vec2& p, const std::vector<Vec2>& point
   if (t * length > tolerance && (1 - t) * length > tolerance) line.splits.push_back({t, id});
 }
 
+// Puts each piece's end that lies within the tolerance of another piece's interior exactly on
+// that piece's line, when that piece is at least as strong: where its own line meets the other
+// (it stays on its own line), or, for lines too near parallel to meet nearby, at its projection.
+// Left where it is, the end would become a split point of the other piece off that piece's
+// line, and a C-1 line (an occluder's footprint, whose nodes are split along it) would bend by
+// up to the tolerance there.
+void endsOntoStrongerLines(std::vector<Piece>& pieces, double tolerance) {
+  for (size_t i = 0; i < pieces.size(); ++i)
+    for (Vec2* end : {&pieces[i].a, &pieces[i].b})
+      for (size_t j = 0; j < pieces.size(); ++j) {
+        const Piece& other = pieces[j];
+        if (j == i || orderIndex(other.order) > orderIndex(pieces[i].order)) continue;
+        if (distanceToSegment(*end, other.a, other.b) > tolerance || glm::distance(*end, other.a) <= tolerance ||
+            glm::distance(*end, other.b) <= tolerance)
+          continue;
+        const Vec2 r = pieces[i].b - pieces[i].a, s = other.b - other.a;
+        const double denominator = r.x * s.y - r.y * s.x;
+        const Vec2 w = other.a - pieces[i].a;
+        const Vec2 along = s / glm::dot(s, s);
+        Vec2 onOther = other.a + glm::dot(*end - other.a, s) * along;  // the projection
+        if (std::abs(denominator) > 1e-3 * glm::length(r) * glm::length(s)) {
+          const Vec2 meet = pieces[i].a + ((w.x * s.y - w.y * s.x) / denominator) * r;
+          if (glm::distance(meet, *end) <= 2.0 * tolerance) onOther = meet;
+        }
+        *end = onOther;
+        break;
+      }
+}
+
 }  // namespace
 
 SegmentArrangement arrangeSegments(const std::vector<Vec2>& outline, const std::vector<EventSegment>& segments,
@@ -171,6 +200,7 @@ SegmentArrangement arrangeSegments(const std::vector<Vec2>& outline, const std::
     pieces.resize(kMaxSegmentsPerPolygon);
   }
   for (const Piece& p : pieces) ++result.mergedSegments[orderIndex(p.order)];
+  endsOntoStrongerLines(pieces, tolerance);
 
   SnappedPoints snapped(tolerance);
   for (const Vec2& p : outline) result.outlinePoint.push_back(snapped.insert(p, true));

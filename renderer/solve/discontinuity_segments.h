@@ -2,8 +2,9 @@
 // From the event segments on one receiver to a planar straight-line graph the constrained
 // Delaunay mesher accepts without degenerate slivers: collinear overlapping segments merged
 // (the strongest continuity order wins where they overlap), endpoints closer than a tolerance
-// made one point, segments split where they cross, where another's endpoint lies on them and
-// where they meet the boundary (which gets those points as vertices). Without this, two
+// made one point, an endpoint near another segment put exactly on it (the stronger segment's
+// line stays straight), segments split where they cross, where another's endpoint lies on
+// them and where they meet the boundary (which gets those points as vertices). Without this, two
 // events computed along the same line in different ways (an EV and a VE wedge of parallel
 // edges) would differ by rounding and leave triangles 1e-16 wide.
 #include "core/limits.h"

@@ -72,6 +72,40 @@ TEST(DiscontinuityEventsTest, WedgesHiddenByAnotherOccluderAreLeftOut) {
   EXPECT_EQ(blockerFiltered.hiddenParts, 0u);
 }
 
+// A plate at height 2 over x > 0.1 hides part of the emitter from the small square's wedges:
+// the critical line from a floor point through a vertex q of the small square (height 1) to a
+// point s of the emitter (height 3) crosses height 2 at (q + s) / 2, under the plate where
+// q.x + s.x > 0.2. The VE wedges of the emitter edges along x are blocked in part: cut where
+// s.x = 0.2 - q.x, on the floor at x = 1.5 q.x - 0.5 s.x = 2 q.x - 0.1 (similar triangles),
+// the clear part on the side of larger x.
+TEST(DiscontinuityEventsTest, WedgesHiddenInPartAreCutWhereTheirCriticalLineIsBlocked) {
+  Scene scene = squaresScene(1.0, 3.0, 0.4, 1.0, 0.3);
+  scene.polygons.push_back({{{0.1, -2.0, 2.0}, {2.0, -2.0, 2.0}, {2.0, 2.0, 2.0}, {0.1, 2.0, 2.0}}, 0});
+  const CriticalLinesByRays lines(scene);
+  EventCounts counts;
+  const std::vector<EventSegment> floor = findDiscontinuityEvents(scene, counts, &lines)[0];
+  EXPECT_GE(counts.partsCut, 8u);
+  const PlaneFrame frame = planeFrame(scene.polygons[0].vertices);
+  auto world = [&](const Vec2& p) { return frame.origin + p.x * frame.u + p.y * frame.v; };
+  // The ray test lifts each ray's ends off their surfaces by RayCaster::kLift of the scene's
+  // size (6e-5 here), which moves where the plate's edge starts to block by about as much.
+  const double tolerance = 2.0 * RayCaster::kLift * scene.bounds().diagonal();
+  for (const Vec3& q : scene.polygons[2].vertices)
+    for (const double sy : {-0.5, 0.5}) {
+      const Vec3 cut(2.0 * q.x - 0.1, 1.5 * q.y - 0.5 * sy, 0.0);
+      int ending = 0;
+      for (const EventSegment& segment : floor) {
+        if (segment.kind != EventKind::OccluderVertexEmitterEdge) continue;
+        for (const auto& [end, other] : {std::pair{segment.a, segment.b}, std::pair{segment.b, segment.a}}) {
+          if (glm::distance(world(end), cut) > tolerance) continue;
+          ++ending;
+          EXPECT_GT(world(other).x, cut.x) << "the clear part lies at larger x, " << str(cut);
+        }
+      }
+      EXPECT_EQ(ending, 1) << "one wedge piece ends at the cut " << str(cut);
+    }
+}
+
 // square() puts corners on the diagonals: side s gives corners at (+-s/2, +-s/2).
 TEST(DiscontinuityEventsTest, SquareHelperMakesAxisAlignedSquares) {
   for (const Vec3& p : square(1.0, 2.0, false)) {

@@ -310,6 +310,40 @@ TEST(DiscontinuityMesherTest, ArrangementMergesOverlapsSnapsAndSplits) {
   }
 }
 
+// A weaker segment ending within the snapping distance of a stronger one (a wedge cut where
+// an occluder's footprint blocks its critical line) ends exactly on it: the C-1 line is split
+// there but stays straight, and the wedge keeps its own line.
+TEST(DiscontinuityMesherTest, AnEndNearAStrongerSegmentLandsOnItsLine) {
+  const std::vector<Vec2> outline = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+  const double tolerance = 1e-4;
+  const Vec2 footprintA{1, 1}, footprintB{3, 1.5};  // not along an axis: rounding shows
+  const Vec2 wedgeFar{2.5, 3};
+  const Vec2 onFootprint = footprintA + 0.6 * (footprintB - footprintA);
+  const Vec2 wedgeEnd = onFootprint + 0.4 * tolerance * glm::normalize(onFootprint - wedgeFar);  // overshoots
+  const std::vector<EventSegment> segments = {
+      {footprintA, footprintB, Continuity::Cm1, EventKind::Contact},
+      {wedgeFar, wedgeEnd, Continuity::C1, EventKind::OccluderVertexEmitterEdge}};
+  const SegmentArrangement arrangement = arrangeSegments(outline, segments, tolerance);
+  const auto& points = arrangement.graph.points;
+  const Vec2 along = glm::normalize(footprintB - footprintA), wedge = glm::normalize(wedgeEnd - wedgeFar);
+  auto offLine = [](const Vec2& p, const Vec2& origin, const Vec2& direction) {
+    const Vec2 d = p - origin;
+    return std::abs(d.x * direction.y - d.y * direction.x);
+  };
+  size_t cm1Pieces = 0;
+  for (size_t s = 0; s < arrangement.graph.segments.size(); ++s)
+    for (int end : arrangement.graph.segments[s]) {
+      const Vec2 p = points[end];
+      if (arrangement.order[s] == Continuity::Cm1) {
+        EXPECT_LT(offLine(p, footprintA, along), 1e-14) << "the C-1 line stays straight";
+        cm1Pieces += end == arrangement.graph.segments[s][0];
+      } else {
+        EXPECT_LT(offLine(p, wedgeFar, wedge), 1e-14) << "the wedge stays on its line";
+      }
+    }
+  EXPECT_EQ(cm1Pieces, 2u);  // split at the wedge's end
+}
+
 TEST(DiscontinuityMesherTest, RandomOccludersNeverBreakTheMesh) {
   std::mt19937 random(12345);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
