@@ -19,6 +19,11 @@ class CriticalLinesByRays : public CriticalLineTest {
   // holds the line (a face of the occluder beside the edge it grazes) does not block it.
   bool clear(const Vec3& x, const Vec3& xNormal, const Vec3& q, const Vec3& s, const Vec3& sNormal) const override;
 
+  // Each ray's origin is lifted off its surface by RayCaster::kLift of the scene's size, which
+  // moves where an edge starts to block it by about the lift over the tangent of the line's
+  // angle with the receiver: four lifts cover lines 14 degrees off the receiver and steeper.
+  double precision() const override { return 4.0 * RayCaster::kLift * diagonal_; }
+
  private:
   bool partClear(const Vec3& from, const Vec3& fromNormal, const Vec3& q) const;
 

@@ -108,6 +108,13 @@ Vec3 pointOnLineNearest(const Vec3& a, const Vec3& b, const Vec3& p, const Vec3&
   return a + ((de * glm::dot(d, w) - dd * glm::dot(e, w)) / denominator) * e;
 }
 
+// A part of a wedge piece, as parameters along the wedge's segment; which of its ends were cut
+// where the critical line's answer changes (the others are where the piece was clipped).
+struct ClearPart {
+  double t0 = 0.0, t1 = 0.0;
+  bool cutAtStart = false, cutAtEnd = false;
+};
+
 class ReceiverEvents {
  public:
   ReceiverEvents(const PolygonGeometry& receiver, std::vector<EventSegment>& out, EventCounts& counts,
@@ -117,15 +124,47 @@ class ReceiverEvents {
   void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order, const Wedge* wedge = nullptr) {
     ++counts_.found[int(kind)];
     const Vec2 a = receiver_.frame.project(x0), b = receiver_.frame.project(x1);
-    std::vector<ParameterInterval> pieces = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
-    if (wedge && criticalLines_ && !pieces.empty()) {
-      pieces = clearParts(a, b, pieces, *wedge);
+    const std::vector<ParameterInterval> clipped = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
+    std::vector<ClearPart> pieces;
+    if (wedge && criticalLines_ && !clipped.empty()) {
+      pieces = clearParts(a, b, clipped, *wedge);
       if (pieces.empty()) ++counts_.wedgesHidden;
+    } else {
+      for (const ParameterInterval& piece : clipped) pieces.push_back({piece.t0, piece.t1});
     }
     if (pieces.empty()) return;
     ++counts_.inserted[int(kind)];
-    for (const ParameterInterval& piece : pieces)
+    for (const ClearPart& piece : pieces) {
+      if (piece.cutAtStart) cutEnds_.push_back({out_.size(), true});
+      if (piece.cutAtEnd) cutEnds_.push_back({out_.size(), false});
       out_.push_back({a + piece.t0 * (b - a), a + piece.t1 * (b - a), order, kind});
+    }
+  }
+
+  // Puts each cut end that lies within the critical-line test's precision of another segment
+  // on this receiver exactly on that segment's line (the strongest order, then the nearest):
+  // it ends on what blocks its critical line, and the arrangement then splits that segment on
+  // its own line (discontinuity_segments.h). Call once every event is added.
+  void putCutEndsOnWhatBlocksThem() {
+    if (!criticalLines_) return;
+    const double reach = criticalLines_->precision();
+    for (const auto& [index, atStart] : cutEnds_) {
+      EventSegment& cut = out_[index];
+      Vec2& end = atStart ? cut.a : cut.b;
+      const Vec2 from = atStart ? cut.b : cut.a;
+      const EventSegment* onto = nullptr;
+      double nearest = reach;
+      for (size_t j = 0; j < out_.size(); ++j) {
+        const EventSegment& other = out_[j];
+        const double d = distanceToSegment(end, other.a, other.b);
+        if (j == index || d > reach) continue;
+        if (!onto || int(other.order) < int(onto->order) || (other.order == onto->order && d < nearest)) {
+          onto = &other;
+          nearest = d;
+        }
+      }
+      if (onto) end = endOntoLine(from, end, onto->a, onto->b, reach);
+    }
   }
 
  private:
@@ -143,11 +182,11 @@ class ReceiverEvents {
   // kCriticalLineSamples points; a piece blocked at every one is left out, one blocked at some
   // is cut where the answer changes between neighbouring samples (found by bisection), and the
   // ends beyond the first and last samples follow them. A cut end lies on what blocks the line
-  // (typically another occluder's footprint or shadow edge on this receiver); arrangeSegments
-  // puts it exactly on that segment when it is one.
-  std::vector<ParameterInterval> clearParts(const Vec2& a, const Vec2& b, const std::vector<ParameterInterval>& pieces,
-                                            const Wedge& wedge) {
-    std::vector<ParameterInterval> clear;
+  // (typically another occluder's footprint or shadow edge on this receiver), to the test's
+  // precision; putCutEndsOnWhatBlocksThem puts it exactly on that segment when it is one.
+  std::vector<ClearPart> clearParts(const Vec2& a, const Vec2& b, const std::vector<ParameterInterval>& pieces,
+                                    const Wedge& wedge) {
+    std::vector<ClearPart> clear;
     const double length = glm::distance(a, b);
     for (const ParameterInterval& piece : pieces) {
       const double step = (piece.t1 - piece.t0) / kCriticalLineSamples;
@@ -155,21 +194,24 @@ class ReceiverEvents {
       bool previous = clearAt(a, b, sample(0), wedge);
       bool anyClear = previous, anyBlocked = !previous;
       double start = piece.t0;
+      bool startCut = false;
       const size_t before = clear.size();
       for (int k = 1; k < kCriticalLineSamples; ++k) {
         const bool now = clearAt(a, b, sample(k), wedge);
         if (now != previous) {
           const double change = transition(a, b, sample(k - 1), sample(k), previous, wedge);
-          if (previous)
-            keep(clear, start, change, length);
-          else
+          if (previous) {
+            keep(clear, {start, change, startCut, true}, length);
+          } else {
             start = change;
+            startCut = true;
+          }
         }
         anyClear |= now;
         anyBlocked |= !now;
         previous = now;
       }
-      if (previous) keep(clear, start, piece.t1, length);
+      if (previous) keep(clear, {start, piece.t1, startCut, false}, length);
       if (!anyClear || clear.size() == before)
         ++counts_.hiddenParts;
       else if (anyBlocked)
@@ -191,15 +233,16 @@ class ReceiverEvents {
     return 0.5 * (t + u);
   }
 
-  // Appends [t0, t1] unless it is shorter than the receiver's tolerance.
-  void keep(std::vector<ParameterInterval>& parts, double t0, double t1, double length) const {
-    if ((t1 - t0) * length > receiver_.tolerance) parts.push_back({t0, t1});
+  // Appends the part unless it is shorter than the receiver's tolerance.
+  void keep(std::vector<ClearPart>& parts, const ClearPart& part, double length) const {
+    if ((part.t1 - part.t0) * length > receiver_.tolerance) parts.push_back(part);
   }
 
   const PolygonGeometry& receiver_;
   std::vector<EventSegment>& out_;
   EventCounts& counts_;
   const CriticalLineTest* criticalLines_;
+  std::vector<std::pair<size_t, bool>> cutEnds_;  // (segment in out_, its start or its end)
 };
 
 // D0: where `other` touches or passes through the receiver's plane, inside `other` (Heckbert
@@ -370,6 +413,16 @@ double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
   return glm::distance(p, a + t * ab);
 }
 
+Vec2 endOntoLine(const Vec2& from, const Vec2& end, const Vec2& a, const Vec2& b, double reach) {
+  const Vec2 r = end - from, s = b - a;
+  if (!(glm::dot(s, s) > 0.0)) return end;
+  const Vec2 projection = a + (glm::dot(end - a, s) / glm::dot(s, s)) * s;
+  const double denominator = cross2(r, s);
+  if (!(std::abs(denominator) > 1e-3 * glm::length(r) * glm::length(s))) return projection;
+  const Vec2 meet = from + (cross2(a - from, s) / denominator) * r;
+  return glm::distance(meet, end) <= reach ? meet : projection;
+}
+
 std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon,
                                                     double tolerance) {
   const Vec2 ab = b - a;
@@ -447,6 +500,7 @@ std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scen
         wedgeEvents(E, geometry[e], O, receiver, events);
       }
     }
+    events.putCutEndsOnWhatBlocksThem();
   }
   return segments;
 }

@@ -54,6 +54,9 @@ struct EventCounts {
 struct CriticalLineTest {
   virtual ~CriticalLineTest() = default;
   virtual bool clear(const Vec3& x, const Vec3& xNormal, const Vec3& q, const Vec3& s, const Vec3& sNormal) const = 0;
+  // How far from the true place where the answer changes along a receiver the test's own
+  // change can lie (a length); a piece cut there is put on another segment this close.
+  virtual double precision() const = 0;
 };
 
 // A relative tolerance: lengths below this times a polygon's size count as zero, points this
@@ -70,7 +73,9 @@ constexpr double kEventTolerance = 1e-7;
 // whose shadow's bounding box (vertices projected from emitter vertices) misses the
 // receiver's. With `criticalLines`, a piece of a wedge (EV or VE) on the receiver whose critical
 // line is blocked at each of kCriticalLineSamples points along it is left out, and one blocked
-// at some of them is cut to its clear parts. Without it every piece is kept whole.
+// at some of them is cut to its clear parts; a cut end within the test's precision of another
+// segment on the receiver (what blocks the line, often an occluder's footprint) is put exactly
+// on it, the strongest and then the nearest. Without it every piece is kept whole.
 std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts,
                                                                const CriticalLineTest* criticalLines = nullptr);
 constexpr int kCriticalLineSamples = 32;
@@ -86,5 +91,10 @@ std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b
 
 // Distance from p to the segment a-b.
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
+
+// Where a segment ending at `end` (its other end `from`) ends when put exactly on the line
+// through a and b: where its own line meets that line, so it stays on its own line, or, for
+// lines too near parallel to meet within `reach` of `end`, the projection of `end`.
+Vec2 endOntoLine(const Vec2& from, const Vec2& end, const Vec2& a, const Vec2& b, double reach);
 
 }  // namespace radview

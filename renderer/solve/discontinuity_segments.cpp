@@ -148,32 +148,35 @@ void splitIfOn(Line& line, int id, const Vec2& p, const std::vector<Vec2>& point
 }
 
 // Puts each piece's end that lies within the tolerance of another piece's interior exactly on
-// that piece's line, when that piece is at least as strong: where its own line meets the other
-// (it stays on its own line), or, for lines too near parallel to meet nearby, at its projection.
-// Left where it is, the end would become a split point of the other piece off that piece's
+// that piece's line, when that piece is at least as strong (the strongest, then the nearest):
+// left where it is, the end would become a split point of the other piece off that piece's
 // line, and a C-1 line (an occluder's footprint, whose nodes are split along it) would bend by
-// up to the tolerance there.
+// up to the tolerance there. The strongest pieces' ends are placed first, so that the lines
+// weaker ends land on have stopped moving.
 void endsOntoStrongerLines(std::vector<Piece>& pieces, double tolerance) {
-  for (size_t i = 0; i < pieces.size(); ++i)
-    for (Vec2* end : {&pieces[i].a, &pieces[i].b})
+  std::vector<size_t> strongestFirst(pieces.size());
+  for (size_t i = 0; i < pieces.size(); ++i) strongestFirst[i] = i;
+  std::stable_sort(strongestFirst.begin(), strongestFirst.end(),
+                   [&](size_t x, size_t y) { return orderIndex(pieces[x].order) < orderIndex(pieces[y].order); });
+  for (size_t i : strongestFirst)
+    for (bool atStart : {true, false}) {
+      Vec2& end = atStart ? pieces[i].a : pieces[i].b;
+      const Vec2 from = atStart ? pieces[i].b : pieces[i].a;
+      const Piece* onto = nullptr;
+      double nearest = tolerance;
       for (size_t j = 0; j < pieces.size(); ++j) {
         const Piece& other = pieces[j];
         if (j == i || orderIndex(other.order) > orderIndex(pieces[i].order)) continue;
-        if (distanceToSegment(*end, other.a, other.b) > tolerance || glm::distance(*end, other.a) <= tolerance ||
-            glm::distance(*end, other.b) <= tolerance)
+        const double d = distanceToSegment(end, other.a, other.b);
+        if (d > tolerance || glm::distance(end, other.a) <= tolerance || glm::distance(end, other.b) <= tolerance)
           continue;
-        const Vec2 r = pieces[i].b - pieces[i].a, s = other.b - other.a;
-        const double denominator = r.x * s.y - r.y * s.x;
-        const Vec2 w = other.a - pieces[i].a;
-        const Vec2 along = s / glm::dot(s, s);
-        Vec2 onOther = other.a + glm::dot(*end - other.a, s) * along;  // the projection
-        if (std::abs(denominator) > 1e-3 * glm::length(r) * glm::length(s)) {
-          const Vec2 meet = pieces[i].a + ((w.x * s.y - w.y * s.x) / denominator) * r;
-          if (glm::distance(meet, *end) <= 2.0 * tolerance) onOther = meet;
+        if (!onto || orderIndex(other.order) < orderIndex(onto->order) || (other.order == onto->order && d < nearest)) {
+          onto = &other;
+          nearest = d;
         }
-        *end = onOther;
-        break;
       }
+      if (onto) end = endOntoLine(from, end, onto->a, onto->b, 2.0 * tolerance);
+    }
 }
 
 }  // namespace

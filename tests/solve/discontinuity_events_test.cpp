@@ -3,6 +3,7 @@
 #include "solve/discontinuity_events.h"
 
 #include "geom/polygon.h"
+#include "mesh/load_file.h"
 #include "mesh/topology.h"
 #include "solve/critical_lines.h"
 #include "solve/discontinuity_mesher.h"
@@ -104,6 +105,35 @@ TEST(DiscontinuityEventsTest, WedgesHiddenInPartAreCutWhereTheirCriticalLineIsBl
       }
       EXPECT_EQ(ending, 1) << "one wedge piece ends at the cut " << str(cut);
     }
+}
+
+// In the Cornell box the short block hides part of the light from wedges of the tall one (and
+// the reverse) where they run under it: those pieces are cut where their critical line enters
+// the block, on its footprint. Each cut end is put exactly on the footprint's line, where its
+// own line meets it; none is left near a footprint but off it, where the footprint would bend
+// when the arrangement splits it there.
+TEST(DiscontinuityEventsTest, CutEndsLandExactlyOnTheFootprintThatHidesThem) {
+  const Scene scene = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf").scene;
+  const CriticalLinesByRays lines(scene);
+  EventCounts counts;
+  const auto events = findDiscontinuityEvents(scene, counts, &lines);
+  EXPECT_GT(counts.partsCut, 0u);
+  const double size = scene.bounds().diagonal();
+  size_t onFootprint = 0;
+  for (const std::vector<EventSegment>& receiver : events)
+    for (const EventSegment& wedge : receiver) {
+      if (wedge.kind == EventKind::Contact) continue;
+      for (const Vec2& end : {wedge.a, wedge.b})
+        for (const EventSegment& footprint : receiver) {
+          if (footprint.order != Continuity::Cm1) continue;
+          const double d = distanceToSegment(end, footprint.a, footprint.b);
+          if (d > 1e-4 * size) continue;
+          EXPECT_LT(d, 1e-14 * size) << "a wedge end " << d << " off a footprint";
+          const bool atCorner = std::min(glm::distance(end, footprint.a), glm::distance(end, footprint.b)) < 1e-9;
+          onFootprint += !atCorner;
+        }
+    }
+  EXPECT_GT(onFootprint, 0u) << "some cut ends lie inside a footprint's edge";
 }
 
 // square() puts corners on the diagonals: side s gives corners at (+-s/2, +-s/2).
