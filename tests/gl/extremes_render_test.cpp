@@ -16,6 +16,7 @@
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "tests/extreme_scenes.h"
+#include "tests/sanitizer/sanitizer_build.h"
 
 #include <gtest/gtest.h>
 
@@ -45,17 +46,10 @@ struct MethodConfig {
   bool convex() const { return method <= Method::Quadratic; }  // stays inside the nodal range here
 };
 
-// Under the sanitizers llvmpipe's tessellation runs 30 to 200 times slower than in Release: a
-// profile is dominated by page faults, as ASan's allocator maps every large buffer llvmpipe
-// allocates per draw afresh (its own code is not instrumented). The sanitizer build draws the
-// tessellated settings in the first view of the first placement only, which exercises
-// radview's side of every tessellated path under the sanitizers; the Release build draws every
-// setting in every view and placement.
-#ifdef RADVIEW_SANITIZE
-constexpr bool kSanitizerBuild = true;
-#else
-constexpr bool kSanitizerBuild = false;
-#endif
+// The sanitizer build (tests/sanitizer/sanitizer_build.h) draws the tessellated settings in the
+// first view of the first placement only, which exercises radview's side of every tessellated
+// path under the sanitizers; the Release build draws every setting in every view and placement.
+using test::kSanitizerBuild;
 bool drawTessellated(size_t placement, size_t view) { return !kSanitizerBuild || (placement == 0 && view == 0); }
 
 // Every method of C&W §9.2 as the renderer draws it: per pixel ("exact"), tessellated at level 4
