@@ -29,9 +29,13 @@ DeferredPass::~DeferredPass() {
 }
 
 void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
-  const size_t vec4s = netVec4s(degree);
+  const size_t vec4s = kNetVec4s;
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (triangles >= kMaxTriangles)
+    throw Error("per-pixel " + std::string(degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": " +
+                std::to_string(triangles) + " triangles, more than the " + std::to_string(kMaxTriangles - 1) +
+                " its visibility pass can number");
   if (triangles * vec4s > size_t(maxTexels))
     throw Error("per-pixel " + std::string(degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": " +
                 std::to_string(triangles) + " triangles need " + std::to_string(triangles * vec4s) +
@@ -61,19 +65,21 @@ void DeferredPass::clear() {
   triangles_ = 0;
 }
 
-void DeferredPass::draw(const glm::mat4& clipFromWorld, RenderTargets& targets, GLuint target) {
-  // Pass 1: visibility and depth; 0 marks the background.
-  const GLuint visibility = targets.ensureVisibility();
-  const GLuint background[4] = {0, 0, 0, 0};
-  glClearNamedFramebufferuiv(visibility, GL_COLOR, 0, background);
-  glBindFramebuffer(GL_FRAMEBUFFER, visibility);
+void DeferredPass::draw(const glm::mat4& clipFromWorld, GLuint target) {
+  GLint color = 0;
+  glGetNamedFramebufferAttachmentParameteriv(target, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &color);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+
+  // Pass 1: visibility and depth, into the target's colour.
   visibility_.set("clipFromWorld", clipFromWorld);
   visibility_.use();
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
 
-  // Pass 2: each covered pixel's value, into the target; the depth is pass 1's.
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  // Pass 2: each covered pixel's value over what pass 1 left there. A fragment that reads only
+  // the texel it writes may sample its own render target once pass 1's writes are made visible
+  // (OpenGL 4.5 §9.3.1, texture barrier).
+  glTextureBarrier();
   GLboolean depthTest = GL_FALSE;
   glGetBooleanv(GL_DEPTH_TEST, &depthTest);
   glDisable(GL_DEPTH_TEST);
@@ -81,7 +87,7 @@ void DeferredPass::draw(const glm::mat4& clipFromWorld, RenderTargets& targets, 
   resolve.set("visibility", 0);
   resolve.set("nets", 1);
   resolve.use();
-  glBindTextureUnit(0, targets.visibilityTexture());
+  glBindTextureUnit(0, GLuint(color));
   glBindTextureUnit(1, netsTexture_);
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);

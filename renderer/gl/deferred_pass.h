@@ -4,16 +4,16 @@
 // barycentric coordinates of its surface point (with depth); one full-screen pass then
 // evaluates the Bezier piece holding that point from control values uploaded once per mesh
 // (gl/patch_nets.h). Each visible pixel is evaluated once, whatever the depth complexity, and
-// the GPU holds 36 bytes of corners and 360 (Clough-Tocher) or 456 (Powell-Sabin) bytes of
-// control values per triangle, where drawing every piece as its own triangle with its net on
-// each vertex took 1,440 and 2,880 (C&W §9.2.2).
+// the GPU holds 36 bytes of corners and 144 of control values per triangle, where drawing
+// every piece as its own triangle with its net on each vertex took 1,440 (Clough-Tocher) and
+// 2,880 (Powell-Sabin) (C&W §9.2.2).
 #include "gl/patch_nets.h"
-#include "gl/render_targets.h"
 #include "gl/shader_program.h"
 
 #include <epoxy/gl.h>
 
 #include <functional>
+#include <string>
 
 namespace radview::gl {
 
@@ -25,24 +25,30 @@ class DeferredPass {
   DeferredPass& operator=(const DeferredPass&) = delete;
 
   // fill(first, count, corners, nets) writes `count` triangles from `first` on: 3 corners and
-  // netVec4s(degree) vec4 of net each (gl/patch_nets.h).
+  // kNetVec4s vec4 each (gl/patch_nets.h).
   using NetFill = std::function<void(size_t first, size_t count, glm::vec3* corners, glm::vec4* nets)>;
   // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them a
   // block at a time, each block uploaded before the next: the CPU never holds more than one.
-  // Throws Error for more than this OpenGL's buffer textures hold.
+  // Throws Error for more than this OpenGL's buffer textures hold, or than a float counts
+  // exactly (2^24 - 1, the visibility pass's triangle numbers).
   void upload(size_t triangles, int degree, const NetFill& fill);
   void clear();  // frees the GPU's copy
   size_t triangles() const { return triangles_; }
-  // Linear radiosity into `target` (a framebuffer sharing targets' depth, cleared, with depth
-  // testing set up by the caller, who also restores it): the visibility raster into targets'
-  // visibility buffer, then the evaluation into `target`, leaving the surfaces' depth behind.
-  void draw(const glm::mat4& clipFromWorld, RenderTargets& targets, GLuint target);
+  // Linear radiosity into `target` (a framebuffer whose colour is an RGBA32F texture, cleared to
+  // 0, with depth, depth testing set up by the caller, who also restores it), leaving the
+  // surfaces' depth behind. The visibility raster writes into that colour texture what each
+  // pixel sees, (triangle + 1, lambda), 0 for the background; the evaluation then reads each
+  // pixel's own texel and overwrites it, so that no visibility buffer is needed beside it.
+  void draw(const glm::mat4& clipFromWorld, GLuint target);
 
  private:
   ShaderProgram visibility_{{"visibility.vert", "visibility.frag"}};
   // One evaluation program per degree, quadratic [0] and cubic [1].
-  ShaderProgram resolve_[2] = {ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 2"}),
-                               ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 3"})};
+  ShaderProgram resolve_[2] = {
+      ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 2", "NET_VEC4S " + std::to_string(kNetVec4s)}),
+      ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 3", "NET_VEC4S " + std::to_string(kNetVec4s)})};
+  // Triangle numbers travel as floats, exact below 2^24.
+  static constexpr size_t kMaxTriangles = size_t(1) << 24;
   GLuint vao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
   size_t triangles_ = 0;
   int degree_ = 3;

@@ -259,7 +259,7 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     // The comparison shares the method's pieces when it is the same method per pixel.
     const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
     DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
-    pass.draw(clipFromWorld, targets_, GLuint(framebuffer));
+    pass.draw(clipFromWorld, GLuint(framebuffer));
     statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
   } else {
     BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;

@@ -32,7 +32,7 @@ void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t spli
   pass.upload(triangles, degree, [&](size_t first, size_t count, glm::vec3* corners, glm::vec4* nets) {
     parallelFor(count, [&](size_t i) {
       const auto patch = make(uint32_t(first + i));
-      writeNet(patch, corners + 3 * i, nets + netVec4s(degree) * i);
+      writeNet(patch, corners + 3 * i, nets + kNetVec4s * i);
       if (split) writeSplitLines(patch, &(*split)[splitPoints * (first + i)]);
     });
   });

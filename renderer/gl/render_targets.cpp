@@ -33,11 +33,9 @@ void RenderTargets::release() {
   glDeleteFramebuffers(1, &linearFbo_);
   glDeleteFramebuffers(1, &displayFbo_);
   glDeleteFramebuffers(1, &comparisonFbo_);
-  glDeleteFramebuffers(1, &visibilityFbo_);
-  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_, visibilityColor_};
-  glDeleteTextures(5, textures);
+  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_};
+  glDeleteTextures(4, textures);
   linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = comparisonFbo_ = comparisonColor_ = 0;
-  visibilityFbo_ = visibilityColor_ = 0;
   width_ = height_ = 0;
 }
 
@@ -87,10 +85,6 @@ GLuint RenderTargets::ensureWithDepth(GLenum format, GLuint& color, GLuint& fbo,
 
 GLuint RenderTargets::ensureComparison() {
   return ensureWithDepth(GL_RGBA32F, comparisonColor_, comparisonFbo_, "comparison");
-}
-
-GLuint RenderTargets::ensureVisibility() {
-  return ensureWithDepth(GL_RGBA32UI, visibilityColor_, visibilityFbo_, "visibility");
 }
 
 }  // namespace radview::gl

@@ -4,8 +4,7 @@
 // depth so overlays drawn after tone mapping are hidden by surfaces in front of them.
 // A window presents `display`; a headless render reads it back. Both see the same pixels.
 // `comparison`, made on first use, is a second linear target of the same size: the method a
-// difference view compares with is drawn there first. `visibility`, made on first use too, is
-// the deferred per-pixel pass's (RGBA32UI: triangle + 1, barycentric bits), sharing the depth.
+// difference view compares with is drawn there first.
 #include <epoxy/gl.h>
 
 namespace radview::gl {
@@ -29,10 +28,6 @@ class RenderTargets {
   GLuint ensureComparison();
   GLuint comparisonFramebuffer() const { return comparisonFbo_; }  // 0 until ensureComparison
   GLuint comparisonTexture() const { return comparisonColor_; }
-  // The visibility target, sharing the depth buffer, made on the first call. Throws Error as
-  // resize.
-  GLuint ensureVisibility();
-  GLuint visibilityTexture() const { return visibilityColor_; }
 
  private:
   void release();
@@ -42,7 +37,6 @@ class RenderTargets {
   GLuint linearFbo_ = 0, displayFbo_ = 0;
   GLuint linearColor_ = 0, displayColor_ = 0, depth_ = 0;
   GLuint comparisonFbo_ = 0, comparisonColor_ = 0;
-  GLuint visibilityFbo_ = 0, visibilityColor_ = 0;
 };
 
 }  // namespace radview::gl

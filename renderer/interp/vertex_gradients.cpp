@@ -104,14 +104,17 @@ Vec3 project(const Vec3& g, const Vec3& n) { return g - glm::dot(g, n) * n; }
 CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useStored) {
   const RadiosityMesh& mesh = surface.mesh();
   const auto& triangles = surface.triangles();
-  CornerGradients out(triangles.size());
   if (useStored && mesh.hasGradients) {
+    // Projected into each triangle's plane: a gradient per corner.
+    std::vector<uint32_t> corner(3 * triangles.size());
+    std::iota(corner.begin(), corner.end(), 0u);
+    std::vector<Gradient> projected(corner.size());
     for (uint32_t t = 0; t < triangles.size(); ++t) {
       const Vec3 n = surface.normal(t);
       for (int k = 0; k < 3; ++k)
-        for (int c = 0; c < 3; ++c) out[t][k][c] = project(mesh.nodes[triangles[t].node[k]].gradient[c], n);
+        for (int c = 0; c < 3; ++c) projected[3 * t + k][c] = project(mesh.nodes[triangles[t].node[k]].gradient[c], n);
     }
-    return out;
+    return CornerGradients(std::move(corner), std::move(projected));
   }
 
   // Sectors: corners at one vertex joined across C1 edges.
@@ -252,8 +255,7 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
     }
   }
 
-  for (uint32_t c = 0; c < cornerCount; ++c) out[c / 3][c % 3] = sectorGradient[sectorOf[c]];
-  return out;
+  return CornerGradients(std::move(sectorOf), std::move(sectorGradient));
 }
 
 }  // namespace radview

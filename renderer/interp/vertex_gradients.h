@@ -6,12 +6,32 @@
 #include "interp/surface_triangulation.h"
 
 #include <array>
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace radview {
 
-// gradient[triangle][corner][channel], world space, in the triangle's plane.
-using CornerGradients = std::vector<std::array<std::array<Vec3, 3>, 3>>;
+// gradients[triangle][corner][channel], world space, in the triangle's plane. The corners of
+// a sector share one stored gradient: about a quarter of the memory of one per corner (a
+// million-element mesh has two million corners, 72 bytes of gradient each).
+class CornerGradients {
+ public:
+  using Gradient = std::array<Vec3, 3>;  // [channel]
+  CornerGradients() = default;
+  // Corner c (= 3 triangle + k) has gradient gradients[sectorOf[c]].
+  CornerGradients(std::vector<uint32_t> sectorOf, std::vector<Gradient> gradients)
+      : sectorOf_(std::move(sectorOf)), gradients_(std::move(gradients)) {}
+  size_t size() const { return sectorOf_.size() / 3; }  // triangles
+  std::array<Gradient, 3> operator[](size_t triangle) const {
+    const uint32_t* s = &sectorOf_[3 * triangle];
+    return {gradients_[s[0]], gradients_[s[1]], gradients_[s[2]]};
+  }
+
+ private:
+  std::vector<uint32_t> sectorOf_;
+  std::vector<Gradient> gradients_;
+};
 
 // From the mesh's stored gradients (projected into each triangle's plane) when it has them
 // and useStored is set; otherwise estimated per sector:

@@ -12,21 +12,29 @@ vec3 bezierControl(vec4 net[8], int index) {
 // The Bernstein sums written out (C&W eq. 9.7) with constant indices: llvmpipe turns them into
 // register reads, where a loop over the net indexes the varyings dynamically and costs
 // several times as much per pixel.
-vec3 quadraticBezier(vec4 net[8], vec3 beta) {
+vec3 quadraticBernstein(vec3 c[6], vec3 beta) {
   float u = beta.x, v = beta.y, w = beta.z;
-  vec3 c0 = net[0].xyz, c1 = vec3(net[0].w, net[1].xy), c2 = vec3(net[1].zw, net[2].x);
-  vec3 c3 = net[2].yzw, c4 = net[3].xyz, c5 = vec3(net[3].w, net[4].xy);
-  return u * u * c0 + 2.0 * u * v * c1 + 2.0 * u * w * c2 + v * v * c3 + 2.0 * v * w * c4 + w * w * c5;
+  return u * u * c[0] + 2.0 * u * v * c[1] + 2.0 * u * w * c[2] + v * v * c[3] + 2.0 * v * w * c[4] + w * w * c[5];
+}
+
+vec3 cubicBernstein(vec3 c[10], vec3 beta) {
+  float u = beta.x, v = beta.y, w = beta.z;
+  return u * u * u * c[0] + 3.0 * u * u * v * c[1] + 3.0 * u * u * w * c[2] + 3.0 * u * v * v * c[3] +
+         6.0 * u * v * w * c[4] + 3.0 * u * w * w * c[5] + v * v * v * c[6] + 3.0 * v * v * w * c[7] +
+         3.0 * v * w * w * c[8] + w * w * w * c[9];
+}
+
+vec3 quadraticBezier(vec4 net[8], vec3 beta) {
+  vec3 c[6] = vec3[](net[0].xyz, vec3(net[0].w, net[1].xy), vec3(net[1].zw, net[2].x), net[2].yzw, net[3].xyz,
+                     vec3(net[3].w, net[4].xy));
+  return quadraticBernstein(c, beta);
 }
 
 vec3 cubicBezier(vec4 net[8], vec3 beta) {
-  float u = beta.x, v = beta.y, w = beta.z;
-  vec3 c0 = net[0].xyz, c1 = vec3(net[0].w, net[1].xy), c2 = vec3(net[1].zw, net[2].x), c3 = net[2].yzw;
-  vec3 c4 = net[3].xyz, c5 = vec3(net[3].w, net[4].xy), c6 = vec3(net[4].zw, net[5].x), c7 = net[5].yzw;
-  vec3 c8 = net[6].xyz, c9 = vec3(net[6].w, net[7].xy);
-  return u * u * u * c0 + 3.0 * u * u * v * c1 + 3.0 * u * u * w * c2 + 3.0 * u * v * v * c3 +
-         6.0 * u * v * w * c4 + 3.0 * u * w * w * c5 + v * v * v * c6 + 3.0 * v * v * w * c7 +
-         3.0 * v * w * w * c8 + w * w * w * c9;
+  vec3 c[10] = vec3[](net[0].xyz, vec3(net[0].w, net[1].xy), vec3(net[1].zw, net[2].x), net[2].yzw, net[3].xyz,
+                      vec3(net[3].w, net[4].xy), vec3(net[4].zw, net[5].x), net[5].yzw, net[6].xyz,
+                      vec3(net[6].w, net[7].xy));
+  return cubicBernstein(c, beta);
 }
 
 // Degree DEGREE, a macro the program defines: 3 (Clough-Tocher) or 2 (Powell-Sabin, quadratic

@@ -1,8 +1,9 @@
 // Frame time of the interpolants at scale: the Cornell box meshed finer and finer (10^4 to
 // 10^6 elements), rendered headless through EGL at 1920x1080 from the scene's camera. Methods
 // are interleaved frame by frame, round after round, so that a shared machine's slow spells
-// fall on all of them alike; each method's median is reported with its interquartile range, and
-// its ratio to Gouraud's median of the same rounds. Seconds to the first frame (pieces built,
+// fall on all of them alike, each round starting one method later; each method's median is
+// reported with its interquartile range, and its ratio to Gouraud as the median over rounds of
+// the two's ratio in the same round. Seconds to the first frame (pieces built,
 // uploaded, drawn, finished) are measured once per method, and so is the memory its renderer
 // holds after that frame: the growth of the process's resident memory (on llvmpipe the GPU's
 // buffers are part of it).
@@ -55,6 +56,14 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
 }
 
+// The median over rounds of a method's time over Gouraud's in the same round: a slow spell
+// that lasts a round slows both sides of each ratio alike.
+double medianRatio(const std::vector<double>& method, const std::vector<double>& gouraud) {
+  std::vector<double> ratios(method.size());
+  for (size_t r = 0; r < method.size(); ++r) ratios[r] = method[r] / gouraud[r];
+  return quantile(ratios, 0.5);
+}
+
 void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height, const std::string& only) {
   const auto meshStart = Clock::now();
   const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
@@ -89,8 +98,11 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
     heldMb.push_back(residentMb() - residentBefore);
   }
   std::vector<std::vector<double>> ms(variants.size());
+  // Each round starts one method later than the last, so that no method always follows the
+  // same one (the first draw after another renderer's pays for its caches going cold).
   for (int round = 0; round < rounds; ++round)
-    for (size_t i = 0; i < variants.size(); ++i) {
+    for (size_t step = 0; step < variants.size(); ++step) {
+      const size_t i = (step + size_t(round)) % variants.size();
       RenderSettings settings;
       settings.method = variants[i].method;
       settings.tessellation = variants[i].tessellation;
@@ -104,10 +116,9 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
   std::printf(
       "| method | median ms | IQR ms | / Gouraud | first frame s | held MB | / Gouraud |\n"
       "|---|---|---|---|---|---|---|\n");
-  const double gouraud = quantile(ms[0], 0.5);
   for (size_t i = 0; i < variants.size(); ++i)
     std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f | %.0f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), quantile(ms[i], 0.5) / gouraud, firstFrame[i], heldMb[i],
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), medianRatio(ms[i], ms[0]), firstFrame[i], heldMb[i],
                 heldMb[i] / heldMb[0]);
   std::fflush(stdout);
 }
