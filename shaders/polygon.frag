@@ -1,4 +1,5 @@
 #version 450 core
+#include "lib/polygon_corners.glsl"
 #include "lib/scanline_gouraud.glsl"
 // Scanline Gouraud (fig. 9.7), bilinear quads and 8-node serendipity quads per pixel, from the
 // element's polygon. MODE, defined by the program, picks one (a compile-time choice: llvmpipe
@@ -7,20 +8,22 @@
 #define MODE_BILINEAR 1
 #define MODE_SERENDIPITY 2
 
-struct PolygonCorner {
-  vec4 position;  // world, w unused
-  vec4 B;
-  vec4 midB;  // serendipity quads: B of the mid-edge node after this corner
-};
-layout(std430, binding = 0) readonly buffer Corners { PolygonCorner corners[]; };
-layout(std430, binding = 1) readonly buffer Offsets { uint firstCorner[]; };  // elements + 1 entries
-
 uniform mat4 clipFromWorld;
 uniform vec2 viewportSize;
 
 in vec3 vPosition;
 in vec3 vB;
 flat in uint vElement;
+#if CORNERS_PER_VERTEX
+flat in int vCount;  // 3 or 4: the polygon is in the flat inputs (polygon.vert)
+flat in vec3 vCornerB[4];
+#if MODE == MODE_SCANLINE
+flat in vec2 vScreen[4];
+flat in int vFront;
+#else
+flat in vec3 vCorner[4];
+#endif
+#endif
 
 layout(location = 0) out vec4 radiosity;
 
@@ -34,7 +37,7 @@ vec3 scanline(uint first, int count) {
   for (int i = 0; i < count; ++i) {
     vec4 clip = clipFromWorld * vec4(corners[first + uint(i)].position.xyz, 1.0);
     if (clip.w <= 0.0) return vB;
-    screen[i] = (clip.xy / clip.w * 0.5 + 0.5) * viewportSize;
+    screen[i] = windowOf(clip, viewportSize);
     values[i] = corners[first + uint(i)].B.rgb;
   }
   vec3 B;
@@ -43,9 +46,10 @@ vec3 scanline(uint first, int count) {
 
 // The quad's own parameters (s, t) at this pixel: Newton's method for the (s, t) whose point
 // x(s, t) is nearest this pixel's surface point, as renderer/interp/bilinear_map.cpp does.
-vec2 quadParameters(uint first) {
-  vec3 p0 = corners[first].position.xyz, p1 = corners[first + 1u].position.xyz;
-  vec3 p2 = corners[first + 2u].position.xyz, p3 = corners[first + 3u].position.xyz;
+vec2 quadParameters(vec3 p0, vec3 p1, vec3 p2, vec3 p3) {
+  // A parallelogram's map is affine: the first step lands on the answer.
+  vec3 twist = p0 - p1 + p2 - p3;
+  bool affine = dot(twist, twist) <= 1e-12 * (dot(p1 - p0, p1 - p0) + dot(p3 - p0, p3 - p0));
   vec2 st = vec2(0.5);
   for (int iteration = 0; iteration < 8; ++iteration) {
     vec3 x = mix(mix(p0, p1, st.x), mix(p3, p2, st.x), st.y);
@@ -55,22 +59,22 @@ vec2 quadParameters(uint first) {
     float det = aa * bb - ab * ab;
     if (!(det > 0.0)) break;
     float ra = dot(r, a), rb = dot(r, b);
-    st -= vec2(bb * ra - ab * rb, aa * rb - ab * ra) / det;
+    vec2 step = vec2(bb * ra - ab * rb, aa * rb - ab * ra) / det;
+    st -= step;
+    // Converged: Newton's error after a step of 1e-5 is of order 1e-10 (a parallelogram's is
+    // exact after one step), below float's precision. bilinear_map.cpp stops likewise, at
+    // double's.
+    if (affine || !(abs(step.x) + abs(step.y) > 1e-5)) break;
   }
   return st;
-}
-
-vec3 bilinear(uint first) {
-  vec2 st = quadParameters(first);
-  vec3 f0 = corners[first].B.rgb, f1 = corners[first + 1u].B.rgb, f2 = corners[first + 2u].B.rgb,
-       f3 = corners[first + 3u].B.rgb;
-  return mix(mix(f0, f1, st.x), mix(f3, f2, st.x), st.y);
 }
 
 // The 8-node serendipity quad (C&W §9.2's quadratic elements) on (xi, eta) = 2 (s, t) - 1, the
 // GLSL twin of the quad in renderer/interp/quadratic_lagrange.cpp.
 vec3 serendipity(uint first) {
-  vec2 q = 2.0 * quadParameters(first) - 1.0;
+  vec2 q = 2.0 * quadParameters(corners[first].position.xyz, corners[first + 1u].position.xyz,
+                                 corners[first + 2u].position.xyz, corners[first + 3u].position.xyz) -
+           1.0;
   float xi = q.x, eta = q.y;
   const vec2 corner[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
   vec3 B = vec3(0.0);
@@ -84,16 +88,57 @@ vec3 serendipity(uint first) {
          0.5 * (1.0 - eta * eta) * ((1.0 + xi) * m1 + (1.0 - xi) * m3);
 }
 
-void main() {
-  uint first = firstCorner[vElement];
-  int count = int(firstCorner[vElement + 1u] - first);
-  vec3 B = vB;
+// Scanline Gouraud, or bilinear on a quad, where the element is a triangle or a quad; false
+// for larger polygons. Its corners come from polygon.vert's flat outputs or are read here
+// (CORNERS_PER_VERTEX: MeshRenderer::drawPolygons picks whichever reads fewer).
+bool smallPolygonValue(out vec3 B) {
+#if CORNERS_PER_VERTEX
+  int count = vCount;
+  vec3 values[4] = vCornerB;
 #if MODE == MODE_SCANLINE
-  B = scanline(first, count);
-#elif MODE == MODE_SERENDIPITY
-  B = serendipity(first);
+  vec2 screen[4] = vScreen;
+  bool front = vFront != 0;
 #else
-  if (count == 4) B = bilinear(first);
+  vec3 world[4] = vCorner;
+#endif
+#else
+  vec3 world[4], values[4];
+  int count = smallPolygon(vElement, world, values);
+#if MODE == MODE_SCANLINE
+  vec2 screen[4];
+  bool front = true;
+  for (int i = 0; i < 4; ++i) {
+    vec4 clip = clipFromWorld * vec4(world[i], 1.0);
+    screen[i] = windowOf(clip, viewportSize);
+    front = front && clip.w > 0.0;
+  }
+#endif
+#endif
+  B = vB;
+  if (count == 0) return false;
+#if MODE == MODE_SCANLINE
+  vec3 scanned;
+  if (front && scanlineGouraud4(count, screen, values, gl_FragCoord.xy, scanned)) B = scanned;
+#else
+  if (count == 4) {
+    vec2 st = quadParameters(world[0], world[1], world[2], world[3]);
+    B = mix(mix(values[0], values[1], st.x), mix(values[3], values[2], st.x), st.y);
+  }
+#endif
+  return true;
+}
+
+void main() {
+  vec3 B = vB;
+#if MODE == MODE_SERENDIPITY
+  B = serendipity(firstCorner[vElement]);
+#else
+  if (!smallPolygonValue(B)) {
+#if MODE == MODE_SCANLINE
+    uint first = firstCorner[vElement];
+    B = scanline(first, int(firstCorner[vElement + 1u] - first));
+#endif
+  }
 #endif
   radiosity = vec4(B, 1.0);
 }

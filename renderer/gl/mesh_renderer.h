@@ -134,9 +134,15 @@ class MeshRenderer {
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
   // What polygon.frag evaluates per pixel from an element's polygon (its MODE_ macros).
   enum class PolygonMode : int { Scanline = 0, Bilinear = 1, Serendipity = 2 };
-  ShaderProgram polygonPrograms_[3] = {ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE"}),
-                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR"}),
-                                       ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SERENDIPITY"})};
+  // Each mode reading the element's corners per pixel; and scanline and bilinear reading a
+  // triangle's or quad's per vertex, as flat outputs (CORNERS_PER_VERTEX; drawPolygons picks).
+  ShaderProgram polygonPrograms_[3] = {
+      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE", "CORNERS_PER_VERTEX 0"}),
+      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR", "CORNERS_PER_VERTEX 0"}),
+      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SERENDIPITY", "CORNERS_PER_VERTEX 0"})};
+  ShaderProgram polygonProgramsPerVertex_[2] = {
+      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE", "CORNERS_PER_VERTEX 1"}),
+      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR", "CORNERS_PER_VERTEX 1"})};
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GlObject overlayVao_, overlayVbo_;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers

@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
+#include <vector>
 
 namespace radview::gl {
 namespace {
@@ -93,13 +95,64 @@ TEST(PolygonMethods, ScanlineGouraudPerPixelIsTheCpuReferenceInTheSameView) {
   EXPECT_GT(gouraud.maxError, 0.01);
 }
 
+// The shader's paths for triangles, quads (here concave: a V whose rows cross all four
+// edges, two spans) and larger polygons, each corner with an unrelated value.
+// `mesh` with small triangles behind the oblique camera, enough that the draw has more vertices
+// than the image has pixels: the polygon pass then reads a triangle's or quad's corners per
+// pixel rather than per vertex (MeshRenderer::drawPolygons).
+RadiosityMesh withVerticesBeyondPixels(RadiosityMesh mesh) {
+  const Camera camera = obliqueCamera();
+  const Vec3 behind = camera.eye + 2.0 * (camera.eye - camera.target);
+  for (int i = 0; i < kObliqueSize * kObliqueSize / 3 + 1; ++i) {
+    const uint32_t first = uint32_t(mesh.nodes.size());
+    for (const Vec3& d : {Vec3(0, 0, 0), Vec3(0.01, 0, 0), Vec3(0, 0.01, 0)})
+      mesh.nodes.push_back({behind + d + Vec3(0, 0, 0.001 * i), Rgb(0.5), {}});
+    mesh.elements.push_back(Element{{first, first + 1, first + 2}, {}, 0, 0});
+  }
+  return mesh;
+}
+
+TEST(PolygonMethods, ScanlineGouraudOfTrianglesConcaveQuadsAndPentagonsIsTheCpuReference) {
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
+  const std::vector<std::vector<Vec3>> polygons = {
+      {{0.1, -0.5, 0}, {0.5, -0.5, 0}, {0.3, -0.05, 0}},
+      {{-0.5, 0.5, 0}, {-0.25, -0.5, 0}, {0, 0.5, 0}, {-0.25, 0.0, 0}},
+      {{0.1, 0.05, 0}, {0.5, 0.0, 0}, {0.55, 0.35, 0}, {0.3, 0.55, 0}, {0.05, 0.4, 0}}};
+  double value = 0.1;
+  for (const auto& polygon : polygons) {
+    Element element{{}, {}, 0, 0};
+    for (const Vec3& p : polygon) {
+      value = std::fmod(value + 0.37, 1.0);
+      element.corners.push_back(uint32_t(mesh.nodes.size()));
+      mesh.nodes.push_back({p, Rgb(value, 1 - value, 0.5), {}});
+    }
+    mesh.elements.push_back(element);
+  }
+  InterpolantOptions options;
+  options.view = ScreenView{obliqueCamera().clipFromWorld(1.0), Vec2(kObliqueSize)};
+  for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
+    const std::unique_ptr<Interpolant> cpu = makeInterpolant(drawn, Method::ScanlineGouraud, options);
+    const test::PixelComparison c = obliqueComparison(Method::ScanlineGouraud, drawn, *cpu);
+    EXPECT_GT(c.pixels, 1000u);
+    EXPECT_EQ(c.withinTolerance, c.pixels);
+  }
+  // The V's two spans are each its own: Gouraud on its triangles differs.
+  const test::PixelComparison gouraud =
+      obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
+  EXPECT_GT(gouraud.maxError, 0.01);
+}
+
 TEST(PolygonMethods, BilinearPerPixelIsTheCpuReference) {
   // An irregular quad, so the bilinear map is not affine.
   RadiosityMesh mesh = loadFile(fig98).mesh;
   mesh.nodes[2].position = {0.7, 0.4, 0.0};
-  const test::PixelComparison c = obliqueComparison(Method::Bilinear, mesh, *makeInterpolant(mesh, Method::Bilinear));
-  EXPECT_GT(c.pixels, 1000u);
-  EXPECT_EQ(c.withinTolerance, c.pixels);
+  for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
+    const test::PixelComparison c =
+        obliqueComparison(Method::Bilinear, drawn, *makeInterpolant(drawn, Method::Bilinear));
+    EXPECT_GT(c.pixels, 1000u);
+    EXPECT_EQ(c.withinTolerance, c.pixels);
+  }
 }
 
 TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
