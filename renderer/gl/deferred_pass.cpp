@@ -66,6 +66,30 @@ void DeferredPass::clear() {
 }
 
 void DeferredPass::draw(const glm::mat4& clipFromWorld, GLuint target) {
+  // Each vertex reads its triangle's values once where the deferred pass reads them once per
+  // covered pixel: fewer reads while there are fewer vertices than pixels (hidden surfaces are
+  // evaluated too, but a scene's depth complexity is small beside the difference).
+  GLint viewport[4] = {};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  if (3 * triangles_ < size_t(viewport[2]) * size_t(viewport[3]))
+    drawForward(clipFromWorld, target);
+  else
+    drawDeferred(clipFromWorld, target);
+}
+
+void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  const ShaderProgram& program = forward_[degree_ == 3];
+  program.set("clipFromWorld", clipFromWorld);
+  program.set("nets", 1);
+  program.use();
+  glBindTextureUnit(1, netsTexture_);
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+  glBindTextureUnit(1, 0);
+}
+
+void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
   GLint color = 0;
   glGetNamedFramebufferAttachmentParameteriv(target, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &color);
   glBindFramebuffer(GL_FRAMEBUFFER, target);

@@ -36,17 +36,25 @@ class DeferredPass {
   size_t triangles() const { return triangles_; }
   // Linear radiosity into `target` (a framebuffer whose colour is an RGBA32F texture, cleared to
   // 0, with depth, depth testing set up by the caller, who also restores it), leaving the
-  // surfaces' depth behind. The visibility raster writes into that colour texture what each
-  // pixel sees, (triangle + 1, lambda), 0 for the background; the evaluation then reads each
-  // pixel's own texel and overwrites it, so that no visibility buffer is needed beside it.
+  // surfaces' depth behind. Deferred: the visibility raster writes into that colour texture
+  // what each pixel sees, (triangle + 1, lambda), 0 for the background; the evaluation then
+  // reads each pixel's own texel and overwrites it, so that no visibility buffer is needed
+  // beside it. Or in one pass, each vertex reading its triangle's values, while the draw has
+  // fewer vertices than the viewport has pixels: that reads less (README, "At scale").
   void draw(const glm::mat4& clipFromWorld, GLuint target);
 
  private:
+  void drawDeferred(const glm::mat4& clipFromWorld, GLuint target);
+  void drawForward(const glm::mat4& clipFromWorld, GLuint target);
   ShaderProgram visibility_{{"visibility.vert", "visibility.frag"}};
-  // One evaluation program per degree, quadratic [0] and cubic [1].
-  ShaderProgram resolve_[2] = {
-      ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 2", "NET_VEC4S " + std::to_string(kNetVec4s)}),
-      ShaderProgram({"fullscreen.vert", "deferred_resolve.frag"}, {"DEGREE 3", "NET_VEC4S " + std::to_string(kNetVec4s)})};
+  // One evaluation program per degree, quadratic [0] and cubic [1], and so the one-pass ones.
+  static ShaderProgram program(const char* vertex, const char* fragment, int degree) {
+    return ShaderProgram({vertex, fragment}, {"DEGREE " + std::to_string(degree), "NET_VEC4S " + std::to_string(kNetVec4s)});
+  }
+  ShaderProgram resolve_[2] = {program("fullscreen.vert", "deferred_resolve.frag", 2),
+                               program("fullscreen.vert", "deferred_resolve.frag", 3)};
+  ShaderProgram forward_[2] = {program("c1_forward.vert", "c1_forward.frag", 2),
+                               program("c1_forward.vert", "c1_forward.frag", 3)};
   // Triangle numbers travel as floats, exact below 2^24.
   static constexpr size_t kMaxTriangles = size_t(1) << 24;
   GLuint vao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture

@@ -1,20 +1,27 @@
-// Frame time of the interpolants at scale: the Cornell box meshed finer and finer (10^4 to
-// 10^6 elements), rendered headless through EGL at 1920x1080 from the scene's camera. Methods
-// are interleaved frame by frame, round after round, so that a shared machine's slow spells
-// fall on all of them alike, each round starting one method later; each method's median is
-// reported with its interquartile range, and its ratio to Gouraud as the median over rounds of
-// the two's ratio in the same round. Seconds to the first frame (pieces built,
-// uploaded, drawn, finished) are measured once per method, and so is the memory its renderer
-// holds after that frame: the growth of the process's resident memory (on llvmpipe the GPU's
-// buffers are part of it).
-//   build/radview_scale_bench [--element-size S]... [--rounds N] [--size WxH] [--methods gouraud,clough-tocher]
+// The interpolants at scale: the Cornell box meshed finer and finer (10^4 to 10^6 elements),
+// rendered headless through EGL at 1920x1080 from the scene's camera.
+// Frame time: methods are interleaved frame by frame, round after round, each round starting
+// one method later, so that a shared machine's slow spells fall on all of them alike; each
+// method's median is reported with its interquartile range, and its ratio to Gouraud as the
+// median over rounds of the two's ratio in the same round. Seconds to the first frame (pieces
+// built, uploaded, drawn, finished) are measured once per method.
+// Memory and wall time: `radview render` of the same mesh, as a user runs it (meshing, direct
+// light, set-up, one frame, PNG), once per method per round, interleaved the same way: its
+// peak resident memory (as /usr/bin/time -f %M reports it; on llvmpipe the GPU's buffers are
+// part of it) and its wall time, each with its median ratio to Gouraud's in the same round.
+//   build/radview_scale_bench [--element-size S]... [--rounds N] [--render-rounds N] [--size WxH]
+//                             [--methods gouraud,clough-tocher]
 #include "core/camera.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "mesh/load_file.h"
 #include "solve/direct_light.h"
 
-#include <malloc.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -22,6 +29,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -31,17 +39,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// The process's resident memory in MB (VmRSS), after handing freed heap back to the system, so
-// that what a renderer holds shows and what its set-up freed does not.
-double residentMb() {
-  malloc_trim(0);
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmRSS:", 0) == 0) return std::atof(line.c_str() + 6) / 1024.0;
-  return 0.0;
-}
 
 struct Variant {
   const char* name;
@@ -64,7 +61,61 @@ double medianRatio(const std::vector<double>& method, const std::vector<double>&
   return quantile(ratios, 0.5);
 }
 
-void measure(const LoadedFile& file, double elementSize, int rounds, int width, int height, const std::string& only) {
+struct RenderRun {
+  double peakMb = 0.0, seconds = 0.0;
+};
+
+// One `radview render` of the Cornell box meshed at `elementSize` with `method`, its output
+// discarded: its peak resident memory and the wall time. Throws if it fails. GNU time starts
+// it and reads its peak: a process started from this one directly would count this one's
+// memory too (Linux keeps the larger peak of the memory image a process replaces on exec).
+RenderRun renderRun(double elementSize, const char* method, int width, int height) {
+  const std::string stem = "/tmp/radview_scale_bench_" + std::to_string(getpid());
+  const std::string out = stem + ".png", peakFile = stem + ".peak";
+  char elementSizeText[32];
+  std::snprintf(elementSizeText, sizeof elementSizeText, "%g", elementSize);
+  std::vector<std::string> args = {"/usr/bin/time",
+                                   "-f",
+                                   "%M",
+                                   "-o",
+                                   peakFile,
+                                   RADVIEW_BINARY,
+                                   "render",
+                                   std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf",
+                                   "--element-size",
+                                   elementSizeText,
+                                   "--size",
+                                   std::to_string(width) + "x" + std::to_string(height),
+                                   "--method",
+                                   method,
+                                   "-o",
+                                   out};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  const auto start = Clock::now();
+  pid_t child = 0;
+  const int spawned = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("cannot run /usr/bin/time (Debian's package time)");
+  int status = 0;
+  waitpid(child, &status, 0);
+  const double seconds = secondsSince(start);
+  double peakKb = 0.0;
+  std::ifstream(peakFile) >> peakKb;
+  std::remove(out.c_str());
+  std::remove(peakFile.c_str());
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || !(peakKb > 0.0))
+    throw std::runtime_error(std::string("radview render --method ") + method + " failed");
+  return {peakKb / 1024.0, seconds};
+}
+
+void measure(const LoadedFile& file, double elementSize, int rounds, int renderRounds, int width, int height,
+             const std::string& only) {
   const auto meshStart = Clock::now();
   const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
   const double meshSeconds = secondsSince(meshStart);
@@ -83,9 +134,8 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
       variants.push_back(v);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
   std::vector<std::unique_ptr<MeshRenderer>> renderers;
-  std::vector<double> firstFrame, heldMb;
+  std::vector<double> firstFrame;
   for (const Variant& v : variants) {
-    const double residentBefore = residentMb();
     const auto start = Clock::now();
     renderers.push_back(std::make_unique<MeshRenderer>());
     renderers.back()->setMesh(mesh);
@@ -95,7 +145,6 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
     renderers.back()->render(camera, settings, width, height);
     glFinish();
     firstFrame.push_back(secondsSince(start));
-    heldMb.push_back(residentMb() - residentBefore);
   }
   std::vector<std::vector<double>> ms(variants.size());
   // Each round starts one method later than the last, so that no method always follows the
@@ -114,12 +163,27 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
   std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n", mesh.elements.size(),
               elementSize, meshSeconds, width, height, rounds);
   std::printf(
-      "| method | median ms | IQR ms | / Gouraud | first frame s | held MB | / Gouraud |\n"
-      "|---|---|---|---|---|---|---|\n");
+      "| method | median ms | IQR ms | / Gouraud | first frame s |\n"
+      "|---|---|---|---|---|\n");
   for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f | %.0f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), medianRatio(ms[i], ms[0]), firstFrame[i], heldMb[i],
-                heldMb[i] / heldMb[0]);
+    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), medianRatio(ms[i], ms[0]), firstFrame[i]);
+  std::fflush(stdout);
+  if (renderRounds == 0) return;
+  renderers.clear();
+  std::vector<std::vector<double>> peakMb(variants.size()), seconds(variants.size());
+  for (int round = 0; round < renderRounds; ++round)
+    for (size_t step = 0; step < variants.size(); ++step) {
+      const size_t i = (step + size_t(round)) % variants.size();
+      const RenderRun run = renderRun(elementSize, variants[i].name, width, height);
+      peakMb[i].push_back(run.peakMb);
+      seconds[i].push_back(run.seconds);
+    }
+  std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud | wall s | / Gouraud |\n|---|---|---|---|---|\n",
+              renderRounds);
+  for (size_t i = 0; i < variants.size(); ++i)
+    std::printf("| %s | %.0f | %.2f | %.2f | %.2f |\n", variants[i].name, quantile(peakMb[i], 0.5),
+                medianRatio(peakMb[i], peakMb[0]), quantile(seconds[i], 0.5), medianRatio(seconds[i], seconds[0]));
   std::fflush(stdout);
 }
 
@@ -129,13 +193,15 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int width, 
 int main(int argc, char** argv) {
   using namespace radview;
   std::vector<double> sizes;
-  int rounds = 15, width = 1920, height = 1080;
+  int rounds = 15, renderRounds = 3, width = 1920, height = 1080;
   std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--element-size"))
       sizes.push_back(std::atof(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--rounds"))
       rounds = std::max(1, std::atoi(argv[i + 1]));
+    else if (!std::strcmp(argv[i], "--render-rounds"))
+      renderRounds = std::max(0, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--size"))
       std::sscanf(argv[i + 1], "%dx%d", &width, &height);
     else if (!std::strcmp(argv[i], "--methods"))
@@ -150,7 +216,7 @@ int main(int argc, char** argv) {
     gl::EglContext context;
     std::printf("%s\n", context.description().c_str());
     const LoadedFile file = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf");
-    for (double s : sizes) gl::measure(file, s, rounds, width, height, methods);
+    for (double s : sizes) gl::measure(file, s, rounds, renderRounds, width, height, methods);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "radview_scale_bench: %s\n", e.what());
     return 1;

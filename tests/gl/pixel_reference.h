@@ -49,4 +49,19 @@ inline PixelComparison compareWithReference(const LinearImage& image, const Came
   return result;
 }
 
+// `mesh` with `count` small triangles behind `camera`, parallel to z = 0, out of every pixel's
+// view: enough of them give a draw more vertices than the image has pixels, which switches
+// the renderer's paths that read per vertex to reading per pixel (MeshRenderer::drawPolygons,
+// DeferredPass::draw).
+inline RadiosityMesh withTrianglesBehind(RadiosityMesh mesh, const Camera& camera, int count) {
+  const Vec3 behind = camera.eye + 2.0 * (camera.eye - camera.target);
+  for (int i = 0; i < count; ++i) {
+    const uint32_t first = uint32_t(mesh.nodes.size());
+    for (const Vec3& d : {Vec3(0, 0, 0), Vec3(0.01, 0, 0), Vec3(0, 0.01, 0)})
+      mesh.nodes.push_back({behind + d + Vec3(0, 0, 0.001 * i), Rgb(0.5), {}});
+    mesh.elements.push_back(Element{{first, first + 1, first + 2}, {}, 0, 0});
+  }
+  return mesh;
+}
+
 }  // namespace radview::test

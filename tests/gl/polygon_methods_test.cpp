@@ -97,19 +97,11 @@ TEST(PolygonMethods, ScanlineGouraudPerPixelIsTheCpuReferenceInTheSameView) {
 
 // The shader's paths for triangles, quads (here concave: a V whose rows cross all four
 // edges, two spans) and larger polygons, each corner with an unrelated value.
-// `mesh` with small triangles behind the oblique camera, enough that the draw has more vertices
-// than the image has pixels: the polygon pass then reads a triangle's or quad's corners per
-// pixel rather than per vertex (MeshRenderer::drawPolygons).
-RadiosityMesh withVerticesBeyondPixels(RadiosityMesh mesh) {
-  const Camera camera = obliqueCamera();
-  const Vec3 behind = camera.eye + 2.0 * (camera.eye - camera.target);
-  for (int i = 0; i < kObliqueSize * kObliqueSize / 3 + 1; ++i) {
-    const uint32_t first = uint32_t(mesh.nodes.size());
-    for (const Vec3& d : {Vec3(0, 0, 0), Vec3(0.01, 0, 0), Vec3(0, 0.01, 0)})
-      mesh.nodes.push_back({behind + d + Vec3(0, 0, 0.001 * i), Rgb(0.5), {}});
-    mesh.elements.push_back(Element{{first, first + 1, first + 2}, {}, 0, 0});
-  }
-  return mesh;
+// `mesh` with enough triangles out of view that the draw has more vertices than the image has
+// pixels: the polygon pass then reads a triangle's or quad's corners per pixel rather than per
+// vertex (MeshRenderer::drawPolygons).
+RadiosityMesh withVerticesBeyondPixels(const RadiosityMesh& mesh) {
+  return test::withTrianglesBehind(mesh, obliqueCamera(), kObliqueSize * kObliqueSize / 3 + 1);
 }
 
 TEST(PolygonMethods, ScanlineGouraudOfTrianglesConcaveQuadsAndPentagonsIsTheCpuReference) {
