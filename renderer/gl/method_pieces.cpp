@@ -48,7 +48,6 @@ DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::sh
   setup.variant = variant;
   setup.surface = std::make_unique<const SurfaceTriangulation>(*setup.mesh, std::move(topology));
   setup.gradients = vertexGradients(*setup.surface, true);
-  if (method == Method::C1Quadratic) setup.incenters = triangleIncenters(*setup.surface);
   return setup;
 }
 
@@ -62,7 +61,7 @@ void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<
   } else {
     streamPatches(
         pass, triangles, 2, kPowellSabinSplitPoints,
-        [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, setup.incenters, t); }, split);
+        [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, t); }, split);
   }
 }
 

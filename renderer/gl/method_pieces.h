@@ -23,8 +23,7 @@ namespace radview::gl {
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
                                         Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
 
-// What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients
-// (and for Powell-Sabin the triangles' incentres). It needs no OpenGL, so that the viewer can
+// What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients. It needs no OpenGL, so that the viewer can
 // make it beside its frame loop; it keeps the mesh it was made from.
 struct DeferredSetup {
   std::shared_ptr<const RadiosityMesh> mesh;
@@ -32,7 +31,6 @@ struct DeferredSetup {
   CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
   std::unique_ptr<const SurfaceTriangulation> surface;
   CornerGradients gradients;
-  std::vector<Vec3> incenters;  // Powell-Sabin only
 };
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
                               Method method, CloughTocherVariant variant);

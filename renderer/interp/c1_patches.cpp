@@ -52,32 +52,31 @@ std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulati
   return patches;
 }
 
-std::vector<Vec3> triangleIncenters(const SurfaceTriangulation& surface) {
-  std::vector<Vec3> Z(surface.triangles().size());
-  for (uint32_t t = 0; t < Z.size(); ++t) {
-    const auto V = surface.positions(t);
-    Z[t] = incenter(V[0], V[1], V[2]);
-  }
-  return Z;
+namespace {
+
+Vec3 incenterOf(const SurfaceTriangulation& surface, uint32_t t) {
+  const auto V = surface.positions(t);
+  return incenter(V[0], V[1], V[2]);
 }
 
-PowellSabinPatch powellSabinPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients,
-                                  const std::vector<Vec3>& Z, uint32_t t) {
+}  // namespace
+
+PowellSabinPatch powellSabinPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients, uint32_t t) {
   const auto V = surface.positions(t);
+  const Vec3 Z = incenter(V[0], V[1], V[2]);
   std::array<Vec3, 3> R;
   for (int k = 0; k < 3; ++k) {
     const Vec3 &a = V[k], &b = V[(k + 1) % 3];
     const std::optional<uint32_t> across = smoothNeighbour(surface, t, k);
-    R[k] = across ? edgeSplitPoint(a, b, Z[t], Z[*across]) : 0.5 * (a + b);
+    R[k] = across ? edgeSplitPoint(a, b, Z, incenterOf(surface, *across)) : 0.5 * (a + b);
   }
   return buildPowellSabin(V, values(surface, t), gradients[t], R);
 }
 
 std::vector<PowellSabinPatch> buildPowellSabinPatches(const SurfaceTriangulation& surface,
                                                       const CornerGradients& gradients) {
-  const std::vector<Vec3> Z = triangleIncenters(surface);
-  std::vector<PowellSabinPatch> patches(Z.size());
-  parallelFor(patches.size(), [&](size_t t) { patches[t] = powellSabinPatch(surface, gradients, Z, uint32_t(t)); });
+  std::vector<PowellSabinPatch> patches(surface.triangles().size());
+  parallelFor(patches.size(), [&](size_t t) { patches[t] = powellSabinPatch(surface, gradients, uint32_t(t)); });
   return patches;
 }
 

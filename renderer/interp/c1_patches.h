@@ -21,13 +21,11 @@ CloughTocherPatch cloughTocherPatch(const SurfaceTriangulation& surface, const C
 std::vector<CloughTocherPatch> buildCloughTocherPatches(const SurfaceTriangulation& surface,
                                                         const CornerGradients& gradients, CloughTocherVariant variant);
 
-// The incenter of every triangle of `surface`, which Powell-Sabin's edge split points join.
-std::vector<Vec3> triangleIncenters(const SurfaceTriangulation& surface);
 // Triangle t's Powell-Sabin element (Reichert's C1 quadratic, C&W §9.2.2): split at its
 // incenter, each edge cut where the segment joining the incenters on its two sides crosses it
-// (its midpoint where the edge is not C1), which is what makes neighbours join C1.
-PowellSabinPatch powellSabinPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients,
-                                  const std::vector<Vec3>& incenters, uint32_t t);
+// (its midpoint where the edge is not C1), which is what makes neighbours join C1. The
+// incenters are computed where needed, a few operations each, rather than stored.
+PowellSabinPatch powellSabinPatch(const SurfaceTriangulation& surface, const CornerGradients& gradients, uint32_t t);
 // One Powell-Sabin element per triangle, built on every core.
 std::vector<PowellSabinPatch> buildPowellSabinPatches(const SurfaceTriangulation& surface,
                                                       const CornerGradients& gradients);

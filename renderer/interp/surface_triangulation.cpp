@@ -214,8 +214,8 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
     if (!samePlane) continue;
     SurfaceTriangle& A = triangles_[t0];
     SurfaceTriangle& B = triangles_[t1];
-    A.neighbour[k0] = t1;
-    B.neighbour[k1] = t0;
+    A.neighbour[k0] = int32_t(t1);  // triangles are far fewer than 2^31 (core/limits.h)
+    B.neighbour[k1] = int32_t(t0);
     // Edge k0 of A runs a -> b; the same edge of B runs b -> a.
     const bool sameNodes = A.node[k0] == B.node[(k1 + 1) % 3] && A.node[(k0 + 1) % 3] == B.node[k1];
     Continuity order = sameNodes ? Continuity::C1 : Continuity::Cm1;

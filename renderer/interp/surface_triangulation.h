@@ -29,7 +29,7 @@ struct SurfaceTriangle {
   uint32_t element = 0;
   // Edge k runs node[k] -> node[k+1]. The triangle across it, in the same plane, or -1 (a
   // boundary, or a crease between two planes: B need not be smooth across either).
-  std::array<int64_t, 3> neighbour{-1, -1, -1};
+  std::array<int32_t, 3> neighbour{-1, -1, -1};
   // Across edge k: C1 inside an element and across untagged edges; the tagged order on a
   // discontinuity edge; C-1 where the two sides have different nodes (their values may
   // differ). Meaningless where neighbour is -1.
