@@ -10,42 +10,25 @@ int smallest(vec3 v) { return v.x <= v.y ? (v.x <= v.z ? 0 : 2) : (v.y <= v.z ? 
 vec3 pick(int i, vec3 a, vec3 b, vec3 c) { return i == 0 ? a : (i == 1 ? b : c); }
 
 #if DEGREE == 3
-// Clough-Tocher (C&W §9.2.2, fig. 9.12). The packed values (patch_nets.h) are f, the
-// tangent-plane values b210 and b120 along each outer edge, and each piece's b111; the rest are
-// the C1 conditions inside the triangle, as clough_tocher.cpp's buildCloughTocher forms them:
-// on the inner edge V_i - C next to V_i the mean of V_i's tangent-plane values (step 2), next
-// to C the mean of that and the b111 on either side (step 4), and at C the mean of those three.
-// All 19 control values of the three pieces: corner values f, edge values (b01 b10 b12 b21 b20
-// b02, b_ij next to V_i on edge V_i - V_j), inner-edge values next to the corners, the pieces'
-// b111 (c), the inner-edge values next to C (d), and the value at C (e).
-struct CloughTocherNet {
-  vec3 f[3], edge[6], inner[3], c[3], d[3], e;
-};
-
-CloughTocherNet cloughTocherNet(vec4 n[NET_VEC4S]) {
-  CloughTocherNet net;
-  net.f = vec3[](n[0].xyz, vec3(n[0].w, n[1].xy), vec3(n[1].zw, n[2].x));
-  net.edge = vec3[](n[2].yzw, n[3].xyz, vec3(n[3].w, n[4].xy), vec3(n[4].zw, n[5].x), n[5].yzw, n[6].xyz);
-  net.c = vec3[](vec3(n[6].w, n[7].xy), vec3(n[7].zw, n[8].x), n[8].yzw);
-  for (int i = 0; i < 3; ++i) net.inner[i] = (net.f[i] + net.edge[2 * i] + net.edge[(2 * i + 5) % 6]) / 3.0;
-  for (int i = 0; i < 3; ++i) net.d[i] = (net.inner[i] + net.c[i] + net.c[(i + 2) % 3]) / 3.0;
-  net.e = (net.d[0] + net.d[1] + net.d[2]) / 3.0;
-  return net;
-}
-
-// Piece k = o + 1 holds the point where lambda_o is the smallest, at coordinates (lambda_k -
-// lambda_o, lambda_k1 - lambda_o, 3 lambda_o).
-vec3 cloughTocherValue(CloughTocherNet net, vec3 lambda) {
+// Clough-Tocher (C&W §9.2.2, fig. 9.12): piece k = o + 1 holds the point where lambda_o is the
+// smallest, at coordinates (lambda_k - lambda_o, lambda_k1 - lambda_o, 3 lambda_o). The packed
+// values (patch_nets.h) are f, the tangent-plane values b210 and b120 along each outer edge,
+// and each piece's b111; the rest are the C1 conditions inside the triangle, as
+// clough_tocher.cpp's buildCloughTocher forms them: on the inner edge V_i - C next to V_i the
+// mean of V_i's tangent-plane values (step 2), next to C the mean of that and the b111 on
+// either side (step 4), and at C the mean of those three.
+vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
+  vec3 f0 = n[0].xyz, f1 = vec3(n[0].w, n[1].xy), f2 = vec3(n[1].zw, n[2].x);
+  vec3 b01 = n[2].yzw, b10 = n[3].xyz, b12 = vec3(n[3].w, n[4].xy), b21 = vec3(n[4].zw, n[5].x);
+  vec3 b20 = n[5].yzw, b02 = n[6].xyz, c0 = vec3(n[6].w, n[7].xy), c1 = vec3(n[7].zw, n[8].x), c2 = n[8].yzw;
+  vec3 inner0 = (f0 + b01 + b02) / 3.0, inner1 = (f1 + b12 + b10) / 3.0, inner2 = (f2 + b20 + b21) / 3.0;
+  vec3 d0 = (inner0 + c0 + c2) / 3.0, d1 = (inner1 + c1 + c0) / 3.0, d2 = (inner2 + c2 + c1) / 3.0;
   int o = smallest(lambda), k = (o + 1) % 3, k1 = (o + 2) % 3;
-  vec3 c[10] = vec3[](pick(k, net.f[0], net.f[1], net.f[2]), pick(k, net.edge[0], net.edge[2], net.edge[4]),
-                      pick(k, net.inner[0], net.inner[1], net.inner[2]), pick(k, net.edge[1], net.edge[3], net.edge[5]),
-                      pick(k, net.c[0], net.c[1], net.c[2]), pick(k, net.d[0], net.d[1], net.d[2]),
-                      pick(k1, net.f[0], net.f[1], net.f[2]), pick(k1, net.inner[0], net.inner[1], net.inner[2]),
-                      pick(k1, net.d[0], net.d[1], net.d[2]), net.e);
+  vec3 c[10] = vec3[](pick(k, f0, f1, f2), pick(k, b01, b12, b20), pick(k, inner0, inner1, inner2),
+                      pick(k, b10, b21, b02), pick(k, c0, c1, c2), pick(k, d0, d1, d2), pick(k1, f0, f1, f2),
+                      pick(k1, inner0, inner1, inner2), pick(k1, d0, d1, d2), (d0 + d1 + d2) / 3.0);
   return cubicBernstein(c, vec3(lambda[k] - lambda[o], lambda[k1] - lambda[o], 3.0 * lambda[o]));
 }
-
-vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) { return cloughTocherValue(cloughTocherNet(n), lambda); }
 #else
 // Powell-Sabin (C&W §9.2.2, fig. 9.9; Reichert): the fan triangle (V_k, V_k1, Z) with the
 // smallest mu = lambda_o / zeta_o, then the side of the line Z - R_k, as powell_sabin.cpp's
