@@ -79,24 +79,6 @@ test::PixelComparison obliqueComparison(Method gpu, const RadiosityMesh& mesh, c
   return test::compareWithReference(renderer.readLinear(), obliqueCamera(), mesh, cpu, 2e-5);  // float32 pieces
 }
 
-TEST(PolygonMethods, ScanlineGouraudPerPixelIsTheCpuReferenceInTheSameView) {
-  // An irregular quad, every corner's value different, so spans differ from row to row.
-  RadiosityMesh mesh = loadFile(fig98).mesh;
-  mesh.nodes[2].position = {0.7, 0.4, 0.0};
-  InterpolantOptions options;
-  options.view = ScreenView{obliqueCamera().clipFromWorld(1.0), Vec2(kObliqueSize)};
-  const std::unique_ptr<Interpolant> cpu = makeInterpolant(mesh, Method::ScanlineGouraud, options);
-  const test::PixelComparison c = obliqueComparison(Method::ScanlineGouraud, mesh, *cpu);
-  EXPECT_GT(c.pixels, 1000u);
-  EXPECT_EQ(c.withinTolerance, c.pixels);
-  // And it is not Gouraud: the view-independent interpolation differs by far more.
-  const test::PixelComparison gouraud =
-      obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
-  EXPECT_GT(gouraud.maxError, 0.01);
-}
-
-// The shader's paths for triangles, quads (here concave: a V whose rows cross all four
-// edges, two spans) and larger polygons, each corner with an unrelated value.
 // `mesh` with enough triangles out of view that the draw has more vertices than the image has
 // pixels: the polygon pass then reads a triangle's or quad's corners per pixel rather than per
 // vertex (MeshRenderer::drawPolygons).
@@ -104,6 +86,31 @@ RadiosityMesh withVerticesBeyondPixels(const RadiosityMesh& mesh) {
   return test::withTrianglesBehind(mesh, obliqueCamera(), kObliqueSize * kObliqueSize / 3 + 1);
 }
 
+// Scanline Gouraud on the GPU is the CPU's in the same view, both ways of reading the
+// corners, and it is not Gouraud on the element triangles (which differs by far more).
+void expectScanlineIsTheCpuReference(const RadiosityMesh& mesh) {
+  InterpolantOptions options;
+  options.view = ScreenView{obliqueCamera().clipFromWorld(1.0), Vec2(kObliqueSize)};
+  for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
+    const std::unique_ptr<Interpolant> cpu = makeInterpolant(drawn, Method::ScanlineGouraud, options);
+    const test::PixelComparison c = obliqueComparison(Method::ScanlineGouraud, drawn, *cpu);
+    EXPECT_GT(c.pixels, 1000u);
+    EXPECT_EQ(c.withinTolerance, c.pixels);
+  }
+  const test::PixelComparison gouraud =
+      obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
+  EXPECT_GT(gouraud.maxError, 0.01);
+}
+
+TEST(PolygonMethods, ScanlineGouraudPerPixelIsTheCpuReferenceInTheSameView) {
+  // An irregular quad, every corner's value different, so spans differ from row to row.
+  RadiosityMesh mesh = loadFile(fig98).mesh;
+  mesh.nodes[2].position = {0.7, 0.4, 0.0};
+  expectScanlineIsTheCpuReference(mesh);
+}
+
+// The shader's paths for triangles, quads (here concave: a V whose rows cross all four
+// edges, two spans) and larger polygons, each corner with an unrelated value.
 TEST(PolygonMethods, ScanlineGouraudOfTrianglesConcaveQuadsAndPentagonsIsTheCpuReference) {
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
@@ -121,18 +128,7 @@ TEST(PolygonMethods, ScanlineGouraudOfTrianglesConcaveQuadsAndPentagonsIsTheCpuR
     }
     mesh.elements.push_back(element);
   }
-  InterpolantOptions options;
-  options.view = ScreenView{obliqueCamera().clipFromWorld(1.0), Vec2(kObliqueSize)};
-  for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
-    const std::unique_ptr<Interpolant> cpu = makeInterpolant(drawn, Method::ScanlineGouraud, options);
-    const test::PixelComparison c = obliqueComparison(Method::ScanlineGouraud, drawn, *cpu);
-    EXPECT_GT(c.pixels, 1000u);
-    EXPECT_EQ(c.withinTolerance, c.pixels);
-  }
-  // The V's two spans are each its own: Gouraud on its triangles differs.
-  const test::PixelComparison gouraud =
-      obliqueComparison(Method::ScanlineGouraud, mesh, *makeInterpolant(mesh, Method::Gouraud));
-  EXPECT_GT(gouraud.maxError, 0.01);
+  expectScanlineIsTheCpuReference(mesh);
 }
 
 TEST(PolygonMethods, BilinearPerPixelIsTheCpuReference) {
