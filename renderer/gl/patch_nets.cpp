@@ -18,18 +18,56 @@ void pack(glm::vec4* out, size_t i, const Rgb& value) {
 
 glm::vec4 withW(const Rgb& value, double w) { return glm::vec4(glm::vec3(value), float(w)); }
 
+
+// One step of de Casteljau's algorithm at x: the degree n net b becomes the degree n - 1 net
+// of the blossom with x as one argument (C&W eq. 9.7; affine, so x may lie outside).
+std::array<Rgb, 10> reduceDegree(int n, const std::array<Rgb, 10>& b, const Vec3& x) {
+  std::array<Rgb, 10> r{};
+  for (int i = n - 1; i >= 0; --i)
+    for (int j = n - 1 - i; j >= 0; --j)
+      r[bezierIndex(n - 1, i, j)] =
+          x.x * b[bezierIndex(n, i + 1, j)] + x.y * b[bezierIndex(n, i, j + 1)] + x.z * b[bezierIndex(n, i, j)];
+  return r;
+}
+
+constexpr double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
+
+// Clough-Tocher piece k's coordinates sigma (clough_tocher.cpp's evaluatePiece) of the big
+// triangle's corner m.
+Vec3 pieceCoordinates(int k, int m) {
+  const int k1 = (k + 1) % 3, o = (k + 2) % 3;
+  const Vec3 lambda(m == 0, m == 1, m == 2);
+  return {lambda[k] - lambda[o], lambda[k1] - lambda[o], 3.0 * lambda[o]};
+}
+
 }  // namespace
 
 void writeNet(const CloughTocherPatch& patch, glm::vec3* corners, glm::vec4* net) {
   writeCorners(patch, corners);
   for (size_t i = 0; i < kNetVec4s; ++i) net[i] = glm::vec4(0.0f);
-  for (int k = 0; k < 3; ++k) {
-    const auto& b = patch.control[k];
-    pack(net, size_t(k), b[bezierIndex(3, 3, 0)]);
-    pack(net, size_t(3 + 2 * k), b[bezierIndex(3, 2, 1)]);
-    pack(net, size_t(4 + 2 * k), b[bezierIndex(3, 1, 2)]);
-    pack(net, size_t(9 + k), b[bezierIndex(3, 1, 1)]);
-  }
+  // P, the polynomial of piece 1 (where lambda_0 is the smallest), over the whole triangle:
+  // its Bezier net in lambda is its blossom at the corners, b_ijk = P[e0^i, e1^j, e2^k],
+  // packed times its Bernstein weight.
+  const auto& piece = patch.control[1];
+  for (int i = 3; i >= 0; --i)
+    for (int j = 3 - i; j >= 0; --j) {
+      std::array<Rgb, 10> b = piece;
+      int n = 3;
+      for (int m = 0; m < 3; ++m)
+        for (int repeat = m == 0 ? i : m == 1 ? j : 3 - i - j; repeat > 0; --repeat, --n)
+          b = reduceDegree(n, b, pieceCoordinates(1, m));
+      const double weight = 6.0 / (factorial(i) * factorial(j) * factorial(3 - i - j));  // c1_pieces.glsl
+      pack(net, size_t(bezierIndex(3, i, j)), weight * b[0]);
+    }
+  // The other pieces differ from P by alpha psi_1 + beta psi_2 (patch_nets.h); piece 2's
+  // difference at the corners e1 and e0 is alpha and alpha - beta.
+  const auto difference = [&](int m) {
+    return evaluateBezier(patch.control[2], pieceCoordinates(2, m)).B -
+           evaluateBezier(patch.control[1], pieceCoordinates(1, m)).B;
+  };
+  const Rgb alpha = difference(1);
+  pack(net, 10, alpha);
+  pack(net, 11, alpha - difference(0));
 }
 
 void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net) {

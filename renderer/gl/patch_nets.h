@@ -1,12 +1,10 @@
 #pragma once
-// The C1 interpolants as the deferred per-pixel pass reads them (gl/deferred_pass.h): each
-// element triangle once, its three corners for the visibility raster, and what determines its
-// pieces, packed for a buffer the resolve shader indexes by triangle. Not the pieces' whole
-// nets: the control values the C1 conditions inside the triangle fix are left for the shader
-// to form (C&W §9.2.2, fig. 9.12 step 4; the Powell-Sabin split's mid values), which keeps a
-// triangle to 144 bytes where its nets take 384 (Clough-Tocher) or 512 (Powell-Sabin). The
-// same numbers the CPU evaluates (c1_patches.h), rounded to float once; the shader reads whole
-// vec4s, as on llvmpipe each read is a gather per pixel. No OpenGL here.
+// The C1 interpolants as the per-pixel passes read them (gl/deferred_pass.h): each element
+// triangle once, its three corners for the raster, and its pieces in 12 RGB values, packed for
+// a buffer the shaders index by triangle. A triangle takes 144 bytes where the pieces' nets
+// take 384 (Clough-Tocher) or 512 (Powell-Sabin). Computed in double from the patches the CPU
+// evaluates (c1_patches.h) and rounded to float once; the shader reads whole vec4s, as on
+// llvmpipe each read is a gather per pixel. No OpenGL here.
 #include "interp/c1_patches.h"
 
 #include <glm/glm.hpp>
@@ -14,9 +12,19 @@
 namespace radview::gl {
 
 // Both C1 methods pack 12 RGB values, three floats each, and what picks the piece into 9 vec4.
-// Clough-Tocher: the corner values f_i (values 0-2), then per outer edge k = (V_k, V_k+1) the
-// tangent-plane values next to either end, b210 and b120 of piece k (values 3 + 2 k, 4 + 2 k),
-// then each piece's b111 (9 + k).
+// Clough-Tocher: the split at the centroid is the same in every triangle's barycentric
+// coordinates, so the C1 piecewise cubics on it are the cubics plus two fixed functions
+// (a cubic's 10 values, the element's 12):
+//   B(lambda) = P(lambda) + alpha psi_1(lambda) + beta psi_2(lambda),
+// P the polynomial of the piece where lambda_0 is the smallest, values 0-9 its Bezier net in
+// lambda (order of bezierIndex) times the Bernstein weights 3!/(i! j! k!), alpha and beta
+// values 10 and 11. psi vanishes where lambda_0
+// is the smallest; where lambda_1 is, psi_1 = (lambda_1 - lambda_0)^2 (lambda_0 + lambda_1 -
+// 2 lambda_2) and psi_2 = (lambda_1 - lambda_0)^2 (lambda_2 - lambda_0); where lambda_2 is,
+// psi_1 = (lambda_2 - lambda_0)^2 (lambda_0 - lambda_1) and psi_2 = (lambda_2 - lambda_0)^2
+// (2 lambda_1 - lambda_0 - lambda_2). Each joins its neighbours C1 across the inner edges
+// (a difference of cubics with a double zero along a line is that line squared times a linear
+// function). A pixel then evaluates one cubic and a correction, not a piece chosen from three.
 // Powell-Sabin: vec4 i = (f_i, zeta_i); 3 + k = (D_k, t_k); 6 + k = (E_k, 0), with zeta the
 // split point's barycentric coordinates, t_k the edge split parameters, and D_k, E_k the
 // derivatives of B along edge k from either end, grad f_k . (V_k+1 - V_k) and

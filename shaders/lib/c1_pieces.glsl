@@ -10,24 +10,23 @@ int smallest(vec3 v) { return v.x <= v.y ? (v.x <= v.z ? 0 : 2) : (v.y <= v.z ? 
 vec3 pick(int i, vec3 a, vec3 b, vec3 c) { return i == 0 ? a : (i == 1 ? b : c); }
 
 #if DEGREE == 3
-// Clough-Tocher (C&W §9.2.2, fig. 9.12): piece k = o + 1 holds the point where lambda_o is the
-// smallest, at coordinates (lambda_k - lambda_o, lambda_k1 - lambda_o, 3 lambda_o). The packed
-// values (patch_nets.h) are f, the tangent-plane values b210 and b120 along each outer edge,
-// and each piece's b111; the rest are the C1 conditions inside the triangle, as
-// clough_tocher.cpp's buildCloughTocher forms them: on the inner edge V_i - C next to V_i the
-// mean of V_i's tangent-plane values (step 2), next to C the mean of that and the b111 on
-// either side (step 4), and at C the mean of those three.
+// Clough-Tocher (C&W §9.2.2, fig. 9.12) as patch_nets.h packs it: the cubic P of the piece
+// where lambda_0 is the smallest, over the whole triangle, plus alpha psi_1 + beta psi_2, the
+// C1 corrections that make it the piece where lambda_1 or lambda_2 is the smallest. P's
+// control values come scaled by their Bernstein weights 3!/(i! j! k!), so that eq. 9.7 is
+// one nested sum in (u, v, w) = lambda.
 vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
-  vec3 f0 = n[0].xyz, f1 = vec3(n[0].w, n[1].xy), f2 = vec3(n[1].zw, n[2].x);
-  vec3 b01 = n[2].yzw, b10 = n[3].xyz, b12 = vec3(n[3].w, n[4].xy), b21 = vec3(n[4].zw, n[5].x);
-  vec3 b20 = n[5].yzw, b02 = n[6].xyz, c0 = vec3(n[6].w, n[7].xy), c1 = vec3(n[7].zw, n[8].x), c2 = n[8].yzw;
-  vec3 inner0 = (f0 + b01 + b02) / 3.0, inner1 = (f1 + b12 + b10) / 3.0, inner2 = (f2 + b20 + b21) / 3.0;
-  vec3 d0 = (inner0 + c0 + c2) / 3.0, d1 = (inner1 + c1 + c0) / 3.0, d2 = (inner2 + c2 + c1) / 3.0;
-  int o = smallest(lambda), k = (o + 1) % 3, k1 = (o + 2) % 3;
-  vec3 c[10] = vec3[](pick(k, f0, f1, f2), pick(k, b01, b12, b20), pick(k, inner0, inner1, inner2),
-                      pick(k, b10, b21, b02), pick(k, c0, c1, c2), pick(k, d0, d1, d2), pick(k1, f0, f1, f2),
-                      pick(k1, inner0, inner1, inner2), pick(k1, d0, d1, d2), (d0 + d1 + d2) / 3.0);
-  return cubicBernstein(c, vec3(lambda[k] - lambda[o], lambda[k1] - lambda[o], 3.0 * lambda[o]));
+  float u = lambda.x, v = lambda.y, w = lambda.z;
+  vec3 p = u * (u * (u * n[0].xyz + v * vec3(n[0].w, n[1].xy) + w * vec3(n[1].zw, n[2].x)) +
+                v * (v * n[2].yzw + w * n[3].xyz) + (w * w) * vec3(n[3].w, n[4].xy)) +
+           v * (v * (v * vec3(n[4].zw, n[5].x) + w * n[5].yzw) + (w * w) * n[6].xyz) +
+           (w * w * w) * vec3(n[6].w, n[7].xy);
+  vec3 alpha = vec3(n[7].zw, n[8].x), beta = n[8].yzw;
+  int o = smallest(lambda);
+  float across = o == 0 ? 0.0 : (o == 1 ? v - u : w - u);
+  float wAlpha = o == 1 ? u + v - 2.0 * w : u - v;
+  float wBeta = o == 1 ? w - u : 2.0 * v - u - w;
+  return p + (across * across) * (wAlpha * alpha + wBeta * beta);
 }
 #else
 // Powell-Sabin (C&W §9.2.2, fig. 9.9; Reichert): the fan triangle (V_k, V_k1, Z) with the
