@@ -2,6 +2,9 @@
 
 #include "interp/bezier_triangle.h"
 
+#include <cmath>
+#include <vector>
+
 namespace radview::gl {
 
 namespace {
@@ -17,7 +20,6 @@ void pack(glm::vec4* out, size_t i, const Rgb& value) {
 }
 
 glm::vec4 withW(const Rgb& value, double w) { return glm::vec4(glm::vec3(value), float(w)); }
-
 
 // One step of de Casteljau's algorithm at x: the degree n net b becomes the degree n - 1 net
 // of the blossom with x as one argument (C&W eq. 9.7; affine, so x may lie outside).
@@ -40,34 +42,64 @@ Vec3 pieceCoordinates(int k, int m) {
   return {lambda[k] - lambda[o], lambda[k1] - lambda[o], 3.0 * lambda[o]};
 }
 
-}  // namespace
-
-void writeNet(const CloughTocherPatch& patch, glm::vec3* corners, glm::vec4* net) {
-  writeCorners(patch, corners);
-  for (size_t i = 0; i < kNetVec4s; ++i) net[i] = glm::vec4(0.0f);
+// Clough-Tocher's 12 packed values (patch_nets.h) from the nets of pieces 1 and 2.
+std::array<Rgb, 12> packCloughTocher(const std::array<Rgb, 10>& piece1, const std::array<Rgb, 10>& piece2) {
+  std::array<Rgb, 12> packed{};
   // P, the polynomial of piece 1 (where lambda_0 is the smallest), over the whole triangle:
   // its Bezier net in lambda is its blossom at the corners, b_ijk = P[e0^i, e1^j, e2^k],
   // packed times its Bernstein weight.
-  const auto& piece = patch.control[1];
   for (int i = 3; i >= 0; --i)
     for (int j = 3 - i; j >= 0; --j) {
-      std::array<Rgb, 10> b = piece;
+      std::array<Rgb, 10> b = piece1;
       int n = 3;
       for (int m = 0; m < 3; ++m)
         for (int repeat = m == 0 ? i : m == 1 ? j : 3 - i - j; repeat > 0; --repeat, --n)
           b = reduceDegree(n, b, pieceCoordinates(1, m));
       const double weight = 6.0 / (factorial(i) * factorial(j) * factorial(3 - i - j));  // c1_pieces.glsl
-      pack(net, size_t(bezierIndex(3, i, j)), weight * b[0]);
+      packed[size_t(bezierIndex(3, i, j))] = weight * b[0];
     }
   // The other pieces differ from P by alpha psi_1 + beta psi_2 (patch_nets.h); piece 2's
   // difference at the corners e1 and e0 is alpha and alpha - beta.
   const auto difference = [&](int m) {
-    return evaluateBezier(patch.control[2], pieceCoordinates(2, m)).B -
-           evaluateBezier(patch.control[1], pieceCoordinates(1, m)).B;
+    return evaluateBezier(piece2, pieceCoordinates(2, m)).B - evaluateBezier(piece1, pieceCoordinates(1, m)).B;
   };
-  const Rgb alpha = difference(1);
-  pack(net, 10, alpha);
-  pack(net, 11, alpha - difference(0));
+  packed[10] = difference(1);
+  packed[11] = packed[10] - difference(0);
+  return packed;
+}
+
+// The packing is linear in the two nets, with weights that are the same in every triangle (the
+// split is, in barycentric coordinates): found once from unit nets and kept as the nonzero
+// terms, a few hundred multiply-adds per triangle where the blossoms take thousands.
+struct PackingTerm {
+  size_t packed, input;  // input: control value 0-9 of piece 1, 10-19 of piece 2
+  double weight;
+};
+
+const std::vector<PackingTerm>& cloughTocherPacking() {
+  static const std::vector<PackingTerm> terms = [] {
+    std::vector<PackingTerm> found;
+    for (size_t input = 0; input < 20; ++input) {
+      std::array<Rgb, 10> piece1{}, piece2{};
+      (input < 10 ? piece1[input] : piece2[input - 10]) = Rgb(1.0);
+      const std::array<Rgb, 12> packed = packCloughTocher(piece1, piece2);
+      for (size_t v = 0; v < packed.size(); ++v)
+        if (std::abs(packed[v].x) > 1e-12) found.push_back({v, input, packed[v].x});
+    }
+    return found;
+  }();
+  return terms;
+}
+
+}  // namespace
+
+void writeNet(const CloughTocherPatch& patch, glm::vec3* corners, glm::vec4* net) {
+  writeCorners(patch, corners);
+  std::array<Rgb, 12> packed{};
+  for (const PackingTerm& term : cloughTocherPacking())
+    packed[term.packed] +=
+        term.weight * (term.input < 10 ? patch.control[1][term.input] : patch.control[2][term.input - 10]);
+  for (size_t v = 0; v < packed.size(); ++v) pack(net, v, packed[v]);
 }
 
 void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net) {

@@ -166,15 +166,25 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
       return std::tie(a, b, triangle, edge) < std::tie(o.a, o.b, o.triangle, o.edge);
     }
   };
-  std::vector<Side> sides;
-  sides.reserve(3 * triangles_.size());
-  for (uint32_t t = 0; t < triangles_.size(); ++t)
-    for (uint32_t k = 0; k < 3; ++k) {
-      const uint32_t a = topology_->positionId(triangles_[t].node[k]);
-      const uint32_t b = topology_->positionId(triangles_[t].node[(k + 1) % 3]);
-      sides.push_back({std::min(a, b), std::max(a, b), t, k});
-    }
-  std::sort(sides.begin(), sides.end());
+  // Counted into place by their smaller end (the sides of one end are a handful), then each
+  // run sorted: linear in the triangles, where one sort of them all was a third of the set-up.
+  std::vector<uint32_t> startOf(size_t(topology_->positionCount()) + 1, 0);
+  for (const SurfaceTriangle& triangle : triangles_)
+    for (uint32_t k = 0; k < 3; ++k)
+      ++startOf[size_t(std::min(topology_->positionId(triangle.node[k]),
+                                topology_->positionId(triangle.node[(k + 1) % 3]))) + 1];
+  for (size_t i = 1; i < startOf.size(); ++i) startOf[i] += startOf[i - 1];
+  std::vector<Side> sides(3 * triangles_.size());
+  {
+    std::vector<uint32_t> next(startOf.begin(), startOf.end());
+    for (uint32_t t = 0; t < triangles_.size(); ++t)
+      for (uint32_t k = 0; k < 3; ++k) {
+        const uint32_t a = topology_->positionId(triangles_[t].node[k]);
+        const uint32_t b = topology_->positionId(triangles_[t].node[(k + 1) % 3]);
+        sides[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), t, k};
+      }
+  }
+  for (size_t a = 0; a + 1 < startOf.size(); ++a) std::sort(sides.begin() + startOf[a], sides.begin() + startOf[a + 1]);
   auto smallestHeight = [&](uint32_t triangle) {
     const auto p = positions(triangle);
     const double longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
