@@ -121,7 +121,25 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 }
 
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
-  const DisplayMesh& display = prepared.display;
+  DisplayMesh& display = prepared.display;
+  // The triangles of elements the quadratic method interpolates linearly first, then those of
+  // its 6-node triangles and serendipity quads: per pixel it draws the first run as Gouraud.
+  {
+    const RadiosityMesh& drawn = *prepared.drawn;
+    auto linearForQuadratic = [&](uint32_t e) {
+      return !isQuadraticTriangle(drawn.elements[e]) && !isSerendipityQuad(drawn, e);
+    };
+    std::vector<DisplayVertex> ordered;
+    ordered.reserve(display.triangles.size());
+    for (bool first : {true, false})
+      for (size_t v = 0; v < display.triangles.size(); v += 3)
+        if (linearForQuadratic(display.triangles[v].element) == first)
+          ordered.insert(ordered.end(), display.triangles.begin() + ptrdiff_t(v), display.triangles.begin() + ptrdiff_t(v + 3));
+    size_t linear = 0;
+    while (linear < ordered.size() && linearForQuadratic(ordered[linear].element)) linear += 3;
+    linearForQuadraticVertices_ = GLsizei(linear);
+    display.triangles = std::move(ordered);
+  }
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
                     GL_STATIC_DRAW);
@@ -162,8 +180,14 @@ bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation)
   return (method == Method::C1Quadratic || method == Method::CloughTocher) && evaluation.tessellation == 0;
 }
 
-void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) {
-  const int wanted = piecesKey(settings.method, settings.cloughTocher);
+bool MeshRenderer::isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation) {
+  return method == Method::Quadratic && evaluation.tessellation == 0;
+}
+
+void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEvaluation& evaluation) {
+  const bool deferred = isDeferred(settings.method, evaluation);
+  const bool quadraticTriangles = isQuadraticPerPixel(settings.method, evaluation);
+  const int wanted = quadraticTriangles ? kQuadraticTrianglesKey : piecesKey(settings.method, settings.cloughTocher);
   if ((deferred ? deferredFor_ : patchesFor_) == wanted && (!settings.splitLines || splitFor_ == wanted)) return;
   if (deferred) {
     adoptPieces(prepareDeferred(mesh_, topology_, settings.method, settings.cloughTocher), settings.splitLines);
@@ -174,9 +198,10 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, bool deferred) 
   deferred_.clear();
   deferredFor_ = -1;
   std::vector<glm::vec3> split;
-  bezierPass_.upload(
-      pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher, settings.splitLines ? &split : nullptr),
-      degreeOf(settings.method));
+  bezierPass_.upload(quadraticTriangles ? quadraticTriangleVertices(*mesh_)
+                                        : pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
+                                                        settings.splitLines ? &split : nullptr),
+                     degreeOf(settings.method));
   patchesFor_ = wanted;
   uploadSplit(split, settings.splitLines ? wanted : -1);
 }
@@ -255,6 +280,21 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   } else if (path == GpuPath::Polygons) {
     drawPolygons(method == Method::ScanlineGouraud ? PolygonMode::Scanline : PolygonMode::Bilinear, meshVao_,
                  triangleVertices_, clipFromWorld, width, height);
+  } else if (isQuadraticPerPixel(method, bezierEvaluation(settings, camera))) {
+    // Linear elements are linear under the quadratic method too: Gouraud's triangles,
+    // perspective-correct; then the 6-node triangles' pieces and the serendipity quads.
+    meshProgram_.set("clipFromWorld", clipFromWorld);
+    meshProgram_.set("method", static_cast<int>(Method::Gouraud));
+    meshProgram_.set("perspectiveCorrect", 1);
+    meshProgram_.use();
+    glBindVertexArray(meshVao_);
+    glDrawArrays(GL_TRIANGLES, 0, linearForQuadraticVertices_);
+    BezierPass& pass = comparison && patchesFor_ != kQuadraticTrianglesKey ? comparisonPass_ : bezierPass_;
+    if (!pass.vertices().empty()) pass.draw(clipFromWorld, bezierEvaluation(settings, camera));
+    if (serendipityVertices_ > 0)
+      drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
+    const size_t pieces = size_t(linearForQuadraticVertices_ + serendipityVertices_) / 3 + pass.vertices().size() / 3;
+    statistics_ = {pieces, 3, 1.0, pieces};
   } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
     // The comparison shares the method's pieces when it is the same method per pixel.
     const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
@@ -367,24 +407,20 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 
 bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
   if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
-  if (methodInfo(settings.method).bezierPieces())
-    uploadPatches(settings, isDeferred(settings.method, bezierEvaluation(settings, viewCamera)));
-  // The comparison is drawn per pixel: deferred for the C1 methods, by its own Bezier pass for
-  // the quadratic one.
-  const int comparisonKey = piecesKey(settings.comparisonMethod, settings.cloughTocher);
-  const bool comparisonDeferred = isDeferred(settings.comparisonMethod, BezierEvaluation{});
-  if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces() &&
-      (comparisonDeferred ? comparisonKey != deferredFor_ : settings.comparisonMethod != settings.method) &&
-      comparisonKey != (comparisonDeferred ? comparisonDeferredFor_ : comparisonPatchesFor_)) {
-    if (comparisonDeferred) {
-      uploadDeferred(prepareDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher),
-                     comparisonDeferred_, nullptr);
-      comparisonDeferredFor_ = comparisonKey;
-    } else {
-      comparisonPass_.upload(
-          pieceVertices(*mesh_, topology_, settings.comparisonMethod, settings.cloughTocher, nullptr),
-          degreeOf(settings.comparisonMethod));
-      comparisonPatchesFor_ = comparisonKey;
+  if (methodInfo(settings.method).bezierPieces()) uploadPatches(settings, bezierEvaluation(settings, viewCamera));
+  // The comparison is drawn per pixel: deferred for the C1 methods; for the quadratic one, its
+  // 6-node triangles in a Bezier pass of their own unless the method's holds them.
+  if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces()) {
+    if (isDeferred(settings.comparisonMethod, BezierEvaluation{})) {
+      const int key = piecesKey(settings.comparisonMethod, settings.cloughTocher);
+      if (key != deferredFor_ && key != comparisonDeferredFor_) {
+        uploadDeferred(prepareDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher),
+                       comparisonDeferred_, nullptr);
+        comparisonDeferredFor_ = key;
+      }
+    } else if (patchesFor_ != kQuadraticTrianglesKey && comparisonPatchesFor_ != kQuadraticTrianglesKey) {
+      comparisonPass_.upload(quadraticTriangleVertices(*mesh_), 2);
+      comparisonPatchesFor_ = kQuadraticTrianglesKey;
     }
   }
   const bool drawNet =

@@ -158,13 +158,20 @@ class MeshRenderer {
   GlObject meshVao_, meshVbo_, edgeVao_, edgeVbo_, emptyVao_;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
-  // the method or the Clough-Tocher variant changes): for the deferred pass when `deferred`
-  // (the C1 methods per pixel), else for the Bezier pass, releasing the other's.
-  void uploadPatches(const RenderSettings& settings, bool deferred);
+  // the method or the Clough-Tocher variant changes): for the deferred pass (the C1 methods per
+  // pixel), else for the Bezier pass, releasing the other's.
+  void uploadPatches(const RenderSettings& settings, const BezierEvaluation& evaluation);
   void uploadSplit(const std::vector<glm::vec3>& split, int key);  // the split lines of the pieces `key`, or none
   // Whether `method` is drawn by the deferred pass with this evaluation: the C1 methods per
   // pixel, on the flat surface.
   static bool isDeferred(Method method, const BezierEvaluation& evaluation);
+  // Whether `method` is the quadratic one per pixel on the flat surface: Gouraud's triangles
+  // for its linear elements (the first linearForQuadraticVertices_ of the mesh's), the Bezier
+  // pass for its 6-node triangles alone (kQuadraticTrianglesKey), the polygon pass for its
+  // serendipity quads.
+  static bool isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation);
+  static constexpr int kQuadraticTrianglesKey = 1 << 20;  // a Bezier pass's key: beyond every piecesKey
+  GLsizei linearForQuadraticVertices_ = 0;
   // A frame's passes, in order. What can throw is uploaded first (the mesh when T-vertex repair
   // changes, the method's and the comparison's pieces, the control net); it returns whether
   // the control net is drawn.

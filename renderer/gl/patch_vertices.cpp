@@ -34,13 +34,30 @@ void addPieceReversed(std::vector<BezierVertex>& out, const std::array<Vec3, 3>&
   addPiece(out, {corners[1], corners[0], corners[2]}, swapped);
 }
 
+void addQuadraticTriangle(std::vector<BezierVertex>& out, const RadiosityMesh& mesh, const Element& element) {
+  const auto& c = element.corners;
+  const auto& m = element.midEdge;  // m[i] on edge c[i] -> c[i+1]
+  auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
+  const Rgb f0 = B(c[0]), f1 = B(c[1]), f2 = B(c[2]);
+  // bezierIndex order for n = 2: b200 b110 b101 b020 b011 b002.
+  const std::array<Rgb, 6> net = {f0, 2.0 * B(m[0]) - 0.5 * (f0 + f1), 2.0 * B(m[2]) - 0.5 * (f0 + f2),
+                                  f1, 2.0 * B(m[1]) - 0.5 * (f1 + f2), f2};
+  addPiece(out, {mesh.nodes[c[0]].position, mesh.nodes[c[1]].position, mesh.nodes[c[2]].position}, net);
+}
+
 }  // namespace
+
+std::vector<BezierVertex> quadraticTriangleVertices(const RadiosityMesh& mesh) {
+  std::vector<BezierVertex> out;
+  for (const Element& element : mesh.elements)
+    if (isQuadraticTriangle(element)) addQuadraticTriangle(out, mesh, element);
+  return out;
+}
 
 std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
                                                     size_t* serendipityStart) {
   std::vector<BezierVertex> out;
   auto position = [&](uint32_t n) { return mesh.nodes[n].position; };
-  auto B = [&](uint32_t n) { return mesh.nodes[n].B; };
   std::vector<size_t> serendipity;
   const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
   // A linear piece over each drawn triangle, T-vertices included (watertightTriangles).
@@ -55,14 +72,8 @@ std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, c
       serendipity.push_back(e);
       continue;
     }
-    if (element.order() == ElementOrder::Quadratic && element.corners.size() == 3) {
-      const auto& c = element.corners;
-      const auto& m = element.midEdge;  // m[i] on edge c[i] -> c[i+1]
-      const Rgb f0 = B(c[0]), f1 = B(c[1]), f2 = B(c[2]);
-      // bezierIndex order for n = 2: b200 b110 b101 b020 b011 b002.
-      const std::array<Rgb, 6> net = {f0, 2.0 * B(m[0]) - 0.5 * (f0 + f1), 2.0 * B(m[2]) - 0.5 * (f0 + f2),
-                                      f1, 2.0 * B(m[1]) - 0.5 * (f1 + f2), f2};
-      addPiece(out, {position(c[0]), position(c[1]), position(c[2])}, net);
+    if (isQuadraticTriangle(element)) {
+      addQuadraticTriangle(out, mesh, element);
       continue;
     }
     addLinear(e);

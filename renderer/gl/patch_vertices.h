@@ -31,6 +31,9 @@ struct BezierVertex {
 // radiosity surface, which needs pieces to lift, still has them (drawn linear there).
 std::vector<BezierVertex> quadraticLagrangeVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
                                                     size_t* serendipityStart = nullptr);
+// Only the 6-node triangles' pieces: the quadratic method per pixel draws the rest of a mesh as
+// the linear interpolant it is there, over the display triangles (MeshRenderer).
+std::vector<BezierVertex> quadraticTriangleVertices(const RadiosityMesh& mesh);
 std::vector<BezierVertex> cloughTocherVertices(const std::vector<CloughTocherPatch>& patches);
 
 // The lines that split an element into its pieces, two points per segment, written at `out`:

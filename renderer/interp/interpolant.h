@@ -70,5 +70,7 @@ std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method m
 // element with 4 corners, convex (a non-convex quad folds the bilinear map the shape functions
 // live on, so it is interpolated linearly instead, like other quadratic polygons).
 bool isSerendipityQuad(const RadiosityMesh& mesh, size_t element);
+// Whether Method::Quadratic evaluates the element as a 6-node triangle (quadratic, 3 corners).
+bool isQuadraticTriangle(const Element& element);
 
 }  // namespace radview

@@ -19,7 +19,7 @@ class QuadraticLagrange : public Interpolant {
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
-    if (e.order() == ElementOrder::Quadratic && e.corners.size() == 3) return triangle(e, x);
+    if (isQuadraticTriangle(e)) return triangle(e, x);
     if (serendipity_[element]) return quad(e, x);
     return linear_->evaluate(element, x);
   }
@@ -89,6 +89,8 @@ bool isSerendipityQuad(const RadiosityMesh& mesh, size_t element) {
   const Element& e = mesh.elements[element];
   return e.order() == ElementOrder::Quadratic && e.corners.size() == 4 && isConvex(mesh.cornerPositions(element));
 }
+
+bool isQuadraticTriangle(const Element& e) { return e.order() == ElementOrder::Quadratic && e.corners.size() == 3; }
 
 std::unique_ptr<Interpolant> makeQuadraticLagrange(const RadiosityMesh& mesh) {
   return std::make_unique<QuadraticLagrange>(mesh);

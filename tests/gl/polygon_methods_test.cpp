@@ -181,6 +181,40 @@ TEST(PolygonMethods, SerendipityQuadsPerPixelAreTheCpuReference) {
   EXPECT_EQ(c.withinTolerance, c.pixels);
 }
 
+// Linear elements beside quadratic ones, listed before, between and after them: per pixel the
+// quadratic method draws them as Gouraud's triangles, the 6-node triangle as its piece and the
+// serendipity quad in the polygon pass, and every pixel is the CPU's. The linear quad has a
+// T-vertex, the serendipity quad's mid-edge node, on the edge they share.
+TEST(PolygonMethods, LinearElementsBesideQuadraticOnesArePerPixelTheCpuReference) {
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
+  const Vec3 corner[] = {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0},
+                         {0.1, 0.9, 0},   {-0.5, -1.1, 0},  {0.4, -1.2, 0}, {1.1, -0.2, 0}};
+  const double cornerB[] = {0.2, 0.9, 0.4, 0.6, 0.35, 0.75, 0.05, 0.5};
+  for (int i = 0; i < 8; ++i) mesh.nodes.push_back({corner[i], Rgb(cornerB[i], 1 - cornerB[i], 0.5), {}});
+  auto mid = [&](uint32_t a, uint32_t b, double value) {
+    mesh.nodes.push_back({0.5 * (corner[a] + corner[b]), Rgb(value, 0.3, 1 - value), {}});
+    return uint32_t(mesh.nodes.size() - 1);
+  };
+  const uint32_t m01 = mid(0, 1, 0.05), m12 = mid(1, 2, 0.95), m23 = mid(2, 3, 0.1), m30 = mid(3, 0, 0.7);
+  const uint32_t m24 = mid(2, 4, 0.8), m43 = mid(4, 3, 0.15);
+  mesh.elements.push_back(Element{{5, 6, 1, 0}, {}, 0, 0});  // linear quad below edge 0-1
+  mesh.elements.push_back(Element{{0, 1, 2, 3}, {m01, m12, m23, m30}, 0, 0});
+  mesh.elements.push_back(Element{{1, 7, 2}, {}, 0, 0});  // linear triangle right of edge 1-2
+  mesh.elements.push_back(Element{{3, 2, 4}, {m23, m24, m43}, 0, 0});
+  ASSERT_TRUE(isSerendipityQuad(mesh, 1));
+  ASSERT_TRUE(isQuadraticTriangle(mesh.elements[3]));
+  for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
+    const test::PixelComparison c =
+        obliqueComparison(Method::Quadratic, drawn, *makeInterpolant(drawn, Method::Quadratic));
+    EXPECT_EQ(c.withinTolerance, c.pixels);
+    // Every element drawn: the coverage is Gouraud's (to a few pixels along the outlines that
+    // the two cut differently).
+    const size_t gouraud = obliqueComparison(Method::Gouraud, drawn, *makeInterpolant(drawn, Method::Gouraud)).pixels;
+    EXPECT_NEAR(double(c.pixels), double(gouraud), 0.01 * double(gouraud));
+  }
+}
+
 }  // namespace
 }  // namespace radview::gl
 
