@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace radview::gl {
 
@@ -42,22 +43,16 @@ void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
                 std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
   glNamedBufferData(corners_, GLsizeiptr(3 * triangles * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
   glNamedBufferData(nets_, GLsizeiptr(vec4s * triangles * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
-  // Written where the driver keeps them, a mapped block at a time: no copy of the block on the
-  // CPU's side to upload from (llvmpipe maps its own storage; a GPU's driver stages a block).
   constexpr size_t kBlock = 16384;
-  const auto mapBlock = [](GLuint buffer, size_t offset, size_t bytes) {
-    void* mapped = glMapNamedBufferRange(buffer, GLintptr(offset), GLsizeiptr(bytes),
-                                         GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT);
-    if (!mapped) throw Error("per-pixel C1: OpenGL could not map " + std::to_string(bytes) + " bytes of its buffer");
-    return mapped;
-  };
+  std::vector<glm::vec3> corners(3 * std::min(kBlock, triangles));
+  std::vector<glm::vec4> nets(vec4s * std::min(kBlock, triangles));
   for (size_t first = 0; first < triangles; first += kBlock) {
     const size_t count = std::min(kBlock, triangles - first);
-    auto* corners = static_cast<glm::vec3*>(mapBlock(corners_, 3 * first * sizeof(glm::vec3), 3 * count * sizeof(glm::vec3)));
-    auto* nets = static_cast<glm::vec4*>(mapBlock(nets_, vec4s * first * sizeof(glm::vec4), vec4s * count * sizeof(glm::vec4)));
-    fill(first, count, corners, nets);
-    glUnmapNamedBuffer(corners_);
-    glUnmapNamedBuffer(nets_);
+    fill(first, count, corners.data(), nets.data());
+    glNamedBufferSubData(corners_, GLintptr(3 * first * sizeof(glm::vec3)), GLsizeiptr(3 * count * sizeof(glm::vec3)),
+                         corners.data());
+    glNamedBufferSubData(nets_, GLintptr(vec4s * first * sizeof(glm::vec4)),
+                         GLsizeiptr(vec4s * count * sizeof(glm::vec4)), nets.data());
   }
   glTextureBuffer(netsTexture_, GL_RGBA32F, nets_);
   triangles_ = triangles;

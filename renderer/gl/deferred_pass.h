@@ -28,7 +28,7 @@ class DeferredPass {
   // kNetVec4s vec4 each (gl/patch_nets.h).
   using NetFill = std::function<void(size_t first, size_t count, glm::vec3* corners, glm::vec4* nets)>;
   // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them a
-  // block at a time into the mapped buffers: the CPU holds no copy.
+  // block at a time, each block uploaded before the next: the CPU never holds more than one.
   // Throws Error for more than this OpenGL's buffer textures hold, or than a float counts
   // exactly (2^24 - 1, the visibility pass's triangle numbers).
   void upload(size_t triangles, int degree, const NetFill& fill);
