@@ -158,23 +158,28 @@ TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
   EXPECT_EQ(c.withinTolerance, c.pixels);
 }
 
-// 8-node serendipity quads, an irregular convex one beside a quadratic triangle, each node
-// with an unrelated value: the quads per pixel in the polygon pass, the triangle in the Bezier
-// pass, both the CPU reference.
-TEST(PolygonMethods, SerendipityQuadsPerPixelAreTheCpuReference) {
-  RadiosityMesh mesh;
-  mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
-  const Vec3 corner[] = {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0}, {0.1, 0.9, 0}};
-  const double cornerB[] = {0.2, 0.9, 0.4, 0.6, 0.35};
-  for (int i = 0; i < 5; ++i) mesh.nodes.push_back({corner[i], Rgb(cornerB[i], 1 - cornerB[i], 0.5), {}});
+// Nodes at `corners`, valued (b, 1 - b, 0.5) from `values`, then over the first five of them an
+// irregular convex 8-node serendipity quad 0-1-2-3 and a 6-node triangle 3-2-4 beside it, each
+// mid-edge node with a value unrelated to its corners'.
+void addQuadraticElements(RadiosityMesh& mesh, const std::vector<Vec3>& corners, const std::vector<double>& values) {
+  for (size_t i = 0; i < corners.size(); ++i) mesh.nodes.push_back({corners[i], Rgb(values[i], 1 - values[i], 0.5), {}});
   auto mid = [&](uint32_t a, uint32_t b, double value) {
-    mesh.nodes.push_back({0.5 * (corner[a] + corner[b]), Rgb(value, 0.3, 1 - value), {}});
+    mesh.nodes.push_back({0.5 * (corners[a] + corners[b]), Rgb(value, 0.3, 1 - value), {}});
     return uint32_t(mesh.nodes.size() - 1);
   };
   const uint32_t m01 = mid(0, 1, 0.05), m12 = mid(1, 2, 0.95), m23 = mid(2, 3, 0.1), m30 = mid(3, 0, 0.7);
   const uint32_t m24 = mid(2, 4, 0.8), m43 = mid(4, 3, 0.15);
   mesh.elements.push_back(Element{{0, 1, 2, 3}, {m01, m12, m23, m30}, 0, 0});
   mesh.elements.push_back(Element{{3, 2, 4}, {m23, m24, m43}, 0, 0});
+}
+
+// Serendipity quads per pixel in the polygon pass, the quadratic triangle in the Bezier pass,
+// both the CPU reference.
+TEST(PolygonMethods, SerendipityQuadsPerPixelAreTheCpuReference) {
+  RadiosityMesh mesh;
+  mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
+  addQuadraticElements(mesh, {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0}, {0.1, 0.9, 0}},
+                       {0.2, 0.9, 0.4, 0.6, 0.35});
   ASSERT_TRUE(isSerendipityQuad(mesh, 0));
   const test::PixelComparison c = obliqueComparison(Method::Quadratic, mesh, *makeInterpolant(mesh, Method::Quadratic));
   EXPECT_GT(c.pixels, 1000u);
@@ -188,20 +193,12 @@ TEST(PolygonMethods, SerendipityQuadsPerPixelAreTheCpuReference) {
 TEST(PolygonMethods, LinearElementsBesideQuadraticOnesArePerPixelTheCpuReference) {
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
-  const Vec3 corner[] = {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0},
-                         {0.1, 0.9, 0},   {-0.5, -1.1, 0},  {0.4, -1.2, 0}, {1.1, -0.2, 0}};
-  const double cornerB[] = {0.2, 0.9, 0.4, 0.6, 0.35, 0.75, 0.05, 0.5};
-  for (int i = 0; i < 8; ++i) mesh.nodes.push_back({corner[i], Rgb(cornerB[i], 1 - cornerB[i], 0.5), {}});
-  auto mid = [&](uint32_t a, uint32_t b, double value) {
-    mesh.nodes.push_back({0.5 * (corner[a] + corner[b]), Rgb(value, 0.3, 1 - value), {}});
-    return uint32_t(mesh.nodes.size() - 1);
-  };
-  const uint32_t m01 = mid(0, 1, 0.05), m12 = mid(1, 2, 0.95), m23 = mid(2, 3, 0.1), m30 = mid(3, 0, 0.7);
-  const uint32_t m24 = mid(2, 4, 0.8), m43 = mid(4, 3, 0.15);
-  mesh.elements.push_back(Element{{5, 6, 1, 0}, {}, 0, 0});  // linear quad below edge 0-1
-  mesh.elements.push_back(Element{{0, 1, 2, 3}, {m01, m12, m23, m30}, 0, 0});
-  mesh.elements.push_back(Element{{1, 7, 2}, {}, 0, 0});  // linear triangle right of edge 1-2
-  mesh.elements.push_back(Element{{3, 2, 4}, {m23, m24, m43}, 0, 0});
+  addQuadraticElements(mesh,
+                       {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0}, {0.1, 0.9, 0},
+                        {-0.5, -1.1, 0}, {0.4, -1.2, 0}, {1.1, -0.2, 0}},
+                       {0.2, 0.9, 0.4, 0.6, 0.35, 0.75, 0.05, 0.5});
+  mesh.elements.insert(mesh.elements.begin(), Element{{5, 6, 1, 0}, {}, 0, 0});  // a linear quad below edge 0-1
+  mesh.elements.insert(mesh.elements.begin() + 2, Element{{1, 7, 2}, {}, 0, 0});  // a linear triangle right of 1-2
   ASSERT_TRUE(isSerendipityQuad(mesh, 1));
   ASSERT_TRUE(isQuadraticTriangle(mesh.elements[3]));
   for (const RadiosityMesh& drawn : {mesh, withVerticesBeyondPixels(mesh)}) {
