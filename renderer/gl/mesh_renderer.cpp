@@ -121,25 +121,7 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 }
 
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
-  DisplayMesh& display = prepared.display;
-  // The triangles of elements the quadratic method interpolates linearly first, then those of
-  // its 6-node triangles and serendipity quads: per pixel it draws the first run as Gouraud.
-  {
-    const RadiosityMesh& drawn = *prepared.drawn;
-    auto linearForQuadratic = [&](uint32_t e) {
-      return !isQuadraticTriangle(drawn.elements[e]) && !isSerendipityQuad(drawn, e);
-    };
-    std::vector<DisplayVertex> ordered;
-    ordered.reserve(display.triangles.size());
-    for (bool first : {true, false})
-      for (size_t v = 0; v < display.triangles.size(); v += 3)
-        if (linearForQuadratic(display.triangles[v].element) == first)
-          ordered.insert(ordered.end(), display.triangles.begin() + ptrdiff_t(v), display.triangles.begin() + ptrdiff_t(v + 3));
-    size_t linear = 0;
-    while (linear < ordered.size() && linearForQuadratic(ordered[linear].element)) linear += 3;
-    linearForQuadraticVertices_ = GLsizei(linear);
-    display.triangles = std::move(ordered);
-  }
+  const DisplayMesh& display = prepared.display;
   // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
   glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
                     GL_STATIC_DRAW);
@@ -166,6 +148,7 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   origin_ = prepared.origin;
   brightestLuminance_ = prepared.brightestLuminance;
   repairedDrawn_ = prepared.repairedTVertices;
+  linearForQuadraticVertices_ = GLsizei(prepared.linearForQuadraticVertices);
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
 }
 

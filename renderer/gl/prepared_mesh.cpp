@@ -1,10 +1,33 @@
 #include "gl/prepared_mesh.h"
 
+#include "interp/interpolant.h"
 #include "interp/t_vertex_repair.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace radview::gl {
+
+namespace {
+
+// Orders the triangles so that those of the elements the quadratic method interpolates
+// linearly come first, and returns how many vertices they take.
+size_t orderLinearForQuadraticFirst(const RadiosityMesh& mesh, std::vector<DisplayVertex>& triangles) {
+  auto linear = [&](uint32_t e) { return !isQuadraticTriangle(mesh.elements[e]) && !isSerendipityQuad(mesh, e); };
+  std::vector<DisplayVertex> ordered;
+  ordered.reserve(triangles.size());
+  size_t linearVertices = 0;
+  for (bool first : {true, false})
+    for (size_t v = 0; v < triangles.size(); v += 3)
+      if (linear(triangles[v].element) == first) {
+        ordered.insert(ordered.end(), triangles.begin() + ptrdiff_t(v), triangles.begin() + ptrdiff_t(v + 3));
+        if (first) linearVertices += 3;
+      }
+  triangles = std::move(ordered);
+  return linearVertices;
+}
+
+}  // namespace
 
 PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices) {
   RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(*original) : *original;
@@ -17,6 +40,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool rep
   for (Node& node : mesh.nodes) node.position -= prepared.origin;
   prepared.topology = std::make_shared<const MeshTopology>(mesh);
   prepared.display = buildDisplayMesh(mesh, *prepared.topology);
+  prepared.linearForQuadraticVertices = orderLinearForQuadraticFirst(mesh, prepared.display.triangles);
   double brightest = 0.0;
   for (const Element& e : mesh.elements)
     if (!mesh.materials[e.material].isEmitter())

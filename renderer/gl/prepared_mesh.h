@@ -17,6 +17,9 @@ struct PreparedMesh {
   std::shared_ptr<const RadiosityMesh> drawn;     // repaired when asked, moved by -origin
   std::shared_ptr<const MeshTopology> topology;   // drawn's, shared with every method's pieces
   DisplayMesh display;                            // drawn's
+  // display.triangles' first vertices: the elements the quadratic method interpolates linearly,
+  // which it draws per pixel as Gouraud's triangles (MeshRenderer::isQuadraticPerPixel).
+  size_t linearForQuadraticVertices = 0;
   Vec3 origin{0.0};
   bool repairedTVertices = false;
   double brightestLuminance = 1.0;  // of the non-emitting elements' nodes, for the surface view
