@@ -82,4 +82,29 @@ std::vector<std::array<int, 3>> constrainedDelaunayTriangulation(const std::vect
   return triangles;
 }
 
+std::optional<std::array<std::array<int, 3>, 2>> convexQuadDelaunay(const std::array<Vec2, 4>& quad) {
+  std::array<Kernel::Point_2, 4> p;
+  for (int i = 0; i < 4; ++i) p[i] = Kernel::Point_2(quad[i].x, quad[i].y);
+  for (int i = 0; i < 4; ++i)
+    if (CGAL::orientation(p[i], p[(i + 1) % 4], p[(i + 2) % 4]) != CGAL::LEFT_TURN) return std::nullopt;
+  // CGAL inserts 0, 1, 2, then 3 outside that triangle, and flips the diagonal 0-2 to 1-3 when
+  // 3 is inside the circle through 0, 1, 2. On that circle it breaks the tie by a symbolic
+  // perturbation (Triangulation_2::side_of_oriented_circle), which for a convex quad keeps the
+  // diagonal that avoids the lexicographically largest corner (x, then y).
+  bool flip = false;
+  switch (CGAL::side_of_oriented_circle(p[0], p[1], p[2], p[3])) {
+    case CGAL::ON_POSITIVE_SIDE: flip = true; break;
+    case CGAL::ON_NEGATIVE_SIDE: flip = false; break;
+    default: {
+      int largest = 0;
+      for (int i = 1; i < 4; ++i)
+        if (CGAL::compare_xy(p[i], p[largest]) == CGAL::LARGER) largest = i;
+      flip = largest == 0 || largest == 2;
+    }
+  }
+  // The faces in the order CGAL's face container lists them after those steps.
+  if (flip) return std::array<std::array<int, 3>, 2>{{{3, 1, 2}, {3, 0, 1}}};
+  return std::array<std::array<int, 3>, 2>{{{0, 1, 2}, {3, 0, 2}}};
+}
+
 }  // namespace radview

@@ -4,6 +4,7 @@
 #include "core/types.h"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace radview {
@@ -13,5 +14,10 @@ namespace radview {
 // `polygon`, counter-clockwise, exactly polygon.size() - 2 of them. Throws Error if two
 // vertices coincide or an edge touches or crosses another (the polygon is not simple).
 std::vector<std::array<int, 3>> constrainedDelaunayTriangulation(const std::vector<Vec2>& polygon);
+
+// The same for a strictly convex quadrilateral (counter-clockwise), without building a
+// triangulation: what constrainedDelaunayTriangulation returns for it, the same triangles in the
+// same order, from the same exact predicates. Nothing for any other four points.
+std::optional<std::array<std::array<int, 3>, 2>> convexQuadDelaunay(const std::array<Vec2, 4>& quad);
 
 }  // namespace radview

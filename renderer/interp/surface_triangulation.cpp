@@ -32,6 +32,16 @@ struct BoundaryVertex {
 std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, const MeshTopology& topology,
                                                   uint32_t element) {
   const Element& e = mesh.elements[element];
+  std::vector<BoundaryVertex> boundary;
+  boundary.reserve(e.corners.size());
+  const std::vector<TVertex>& all = topology.tVertices();
+  // MeshTopology lists T-vertices by element: this element's are one run of them.
+  const auto run =
+      std::lower_bound(all.begin(), all.end(), element, [](const TVertex& v, uint32_t el) { return v.element < el; });
+  if (e.order() != ElementOrder::Linear || run == all.end() || run->element != element) {
+    for (uint32_t k = 0; k < e.corners.size(); ++k) boundary.push_back({e.corners[k], k});
+    return boundary;
+  }
   std::vector<std::vector<std::pair<double, uint32_t>>> inserted(e.corners.size());
   // A node the element across the same edge has as a corner is no T-vertex: that element
   // shares the whole edge, so the node is the apex of a cap (a triangle thinner than the 1e-5
@@ -45,15 +55,8 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
       if (topology.positionId(c) == topology.positionId(t.node)) return true;
     return false;
   };
-  if (e.order() == ElementOrder::Linear) {
-    // MeshTopology lists T-vertices by element: this element's are one run of them.
-    const std::vector<TVertex>& all = topology.tVertices();
-    auto t =
-        std::lower_bound(all.begin(), all.end(), element, [](const TVertex& v, uint32_t el) { return v.element < el; });
-    for (; t != all.end() && t->element == element; ++t)
-      if (!isCapApex(*t)) inserted[t->edge].push_back({t->t, t->node});
-  }
-  std::vector<BoundaryVertex> boundary;
+  for (auto t = run; t != all.end() && t->element == element; ++t)
+    if (!isCapApex(*t)) inserted[t->edge].push_back({t->t, t->node});
   for (uint32_t k = 0; k < e.corners.size(); ++k) {
     boundary.push_back({e.corners[k], k});
     std::sort(inserted[k].begin(), inserted[k].end());
@@ -69,9 +72,10 @@ std::vector<BoundaryVertex> boundaryWithTVertices(const RadiosityMesh& mesh, con
 // the positions' rounding decided it: the extreme box scaled by 1e-6 (not exact in binary) had
 // 411 of its triangles cut along the other diagonal, and the C1 methods built on them changed
 // by up to 10 times the element's largest value (scale_invariance_test). Rounded, near ties are
-// exact ties at every scale, broken by insertion order alone. 2^-40 of the extent is well above
-// double round-off (2^-52), and moving a vertex by half of it brings no two together: that is
-// far inside MeshTopology's weld distance (1e-7 of the mesh's diagonal).
+// exact ties at every scale, broken the same way at each (convexQuadDelaunay says how). 2^-40
+// of the extent is well above double round-off (2^-52), and moving a vertex by half of it
+// brings no two together: that is far inside MeshTopology's weld distance (1e-7 of the mesh's
+// diagonal).
 std::vector<std::array<int, 3>> delaunayTriangles(const std::vector<Vec3>& polygon) {
   if (polygon.size() == 3) return {{0, 1, 2}};
   PlaneFrame frame = planeFrame(polygon);
@@ -94,7 +98,10 @@ std::vector<std::array<int, 3>> delaunayTriangles(const std::vector<Vec3>& polyg
     extent = std::max({extent, std::abs(flat[i].x), std::abs(flat[i].y)});
   }
   for (Vec2& p : flat) p = glm::round(std::ldexp(1.0, 40) / extent * p);
-  std::vector<std::array<int, 3>> triangles = constrainedDelaunayTriangulation(flat);
+  // Most elements are convex quads: their two triangles without building a triangulation.
+  const auto quad = n == 4 ? convexQuadDelaunay({flat[0], flat[1], flat[2], flat[3]}) : std::nullopt;
+  std::vector<std::array<int, 3>> triangles =
+      quad ? std::vector<std::array<int, 3>>(quad->begin(), quad->end()) : constrainedDelaunayTriangulation(flat);
   for (auto& t : triangles)
     for (int& v : t) v = static_cast<int>((v + start) % n);
   return triangles;
@@ -143,7 +150,11 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
         }
       },
       1);
+  size_t total = 0;
+  for (const Cut& cut : cuts) total += cut.triangles.size();
+  triangles_.reserve(total);
   std::vector<std::array<int64_t, 3>> onElementEdge;
+  onElementEdge.reserve(total);
   for (Cut& cut : cuts) {
     uint32_t first = uint32_t(triangles_.size());
     for (uint32_t count : cut.countOf) {
@@ -184,16 +195,14 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
         sides[next[std::min(a, b)]++] = {std::min(a, b), std::max(a, b), t, k};
       }
   }
-  for (size_t a = 0; a + 1 < startOf.size(); ++a) std::sort(sides.begin() + startOf[a], sides.begin() + startOf[a + 1]);
   auto smallestHeight = [&](uint32_t triangle) {
     const auto p = positions(triangle);
     const double longest = std::max({glm::length(p[1] - p[0]), glm::length(p[2] - p[1]), glm::length(p[0] - p[2])});
     return longest > 0.0 ? glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) / longest : 0.0;
   };
-  for (size_t first = 0, last = 0; first < sides.size(); first = last) {
-    for (last = first + 1; last < sides.size() && sides[last].a == sides[first].a && sides[last].b == sides[first].b;)
-      ++last;
-    if (last - first != 2) continue;
+  // Each run of one smaller end on its own: a triangle edge is in one run only, so no two write
+  // the same neighbour.
+  auto link = [&](size_t first) {
     const uint32_t t0 = sides[first].triangle, t1 = sides[first + 1].triangle;
     const int k0 = int(sides[first].edge), k1 = int(sides[first + 1].edge);
     // The far vertex of one is measured from the plane of the other whose normal is the better
@@ -221,7 +230,7 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
     const double lever = glm::length(far - p0[0]) / smallestHeight(reference);
     const double tolerance = 1e-9 * size + 4.0 * delta * (1.0 + lever);
     const bool samePlane = glm::dot(n0, normal(other)) > 1.0 - 1e-9 && std::abs(glm::dot(far - p0[0], n0)) <= tolerance;
-    if (!samePlane) continue;
+    if (!samePlane) return;
     SurfaceTriangle& A = triangles_[t0];
     SurfaceTriangle& B = triangles_[t1];
     A.neighbour[k0] = int32_t(t1);  // triangles are far fewer than 2^31 (core/limits.h)
@@ -239,7 +248,18 @@ SurfaceTriangulation::SurfaceTriangulation(const RadiosityMesh& mesh, std::share
       }
     }
     A.continuity[k0] = B.continuity[k1] = order;
-  }
+  };
+  parallelFor(
+      startOf.size() - 1,
+      [&](size_t a) {
+        const auto begin = sides.begin() + startOf[a], end = sides.begin() + startOf[a + 1];
+        std::sort(begin, end);
+        for (auto first = begin, last = begin; first != end; first = last) {
+          for (last = first + 1; last != end && last->b == first->b;) ++last;
+          if (last - first == 2) link(size_t(first - sides.begin()));
+        }
+      },
+      4096);
 }
 
 std::array<Vec3, 3> SurfaceTriangulation::positions(uint32_t triangle) const {
