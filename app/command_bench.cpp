@@ -69,6 +69,12 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
       ->check(CLI::Range(1, kMaxBenchFrames))
       ->capture_default_str();
+  command
+      ->add_option("--row-seconds", o.rowSeconds,
+                   "Stop timing a row once its timed frames have taken this long and there are at least "
+                   "3 of them (a row of 2-second frames needs no 9); 0 always times --frames")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   command->add_option("--levels", o.levels, "Tessellation levels, comma-separated, 1..64")->capture_default_str();
   command->add_option("--tolerances", o.tolerances, "Adaptive tessellation tolerances, 8-bit steps, comma-separated")
       ->capture_default_str();
@@ -183,10 +189,13 @@ int runBench(const BenchOptions& options) {
       glFinish();
     }
     std::vector<double> ms;
+    const auto timingStart = std::chrono::steady_clock::now();
     for (int k = 0; k < options.frames; ++k) {
       renderer.render(camera, settings, width, height);
       glFinish();
       ms.push_back(renderer.gpuFrameMs());
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - timingStart).count();
+      if (options.rowSeconds > 0.0 && ms.size() >= 3 && seconds >= options.rowSeconds) break;
     }
     TradeoffRow row;
     row.method = methodName(v.method);
@@ -214,8 +223,8 @@ int runBench(const BenchOptions& options) {
     row.displayMax = shown.maxAbs * 255.0;
     row.machBands = meanGradientJump(image, exposureScale, stencils.smooth);
     row.c0Kinks = meanGradientJump(image, exposureScale, stencils.c0);
-    std::fprintf(stderr, "%s %s: %.3g ms, display RMSE %.3g steps\n", row.method.c_str(), row.setting.c_str(),
-                 row.frameMs, row.displayRmse);
+    std::fprintf(stderr, "%s %s: %.3g ms (median of %zu), display RMSE %.3g steps\n", row.method.c_str(),
+                 row.setting.c_str(), row.frameMs, ms.size(), row.displayRmse);
     rows.push_back(row);
   }
   markParetoFront(rows);
@@ -227,7 +236,8 @@ int runBench(const BenchOptions& options) {
          << gatherSeconds << " s); "
          << "its own Mach-band measure " << referenceMach << ", C0 kinks " << referenceKinks << " steps/px (noise "
          << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
-         << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames << " frames.\n";
+         << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames
+         << " frames, or of at least 3 once they take " << options.rowSeconds << " s (--row-seconds).\n";
   if (!skipped.empty()) {
     header << "Not measured, their triangles more than " << options.maxTrianglesPerPixel
            << " times the pixels (--max-triangles-per-pixel):";

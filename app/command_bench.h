@@ -17,6 +17,7 @@ struct BenchOptions {
   int spp = 256;                                    // the reference's samples per pixel
   std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
   int frames = 9;                                   // timed frames per row (median)
+  double rowSeconds = 3.0;                          // a row's timing stops after this, once 3 frames are in
   std::string levels = "1,2,4,8,16,32,64";          // tessellation levels of the quadratic and C1 methods
   std::string tolerances = "0.5,2";                 // adaptive tessellation tolerances, 8-bit steps
   // Fixed levels whose triangles would outnumber the image's pixels this many times are not
