@@ -35,10 +35,10 @@ vec3 scanline(uint first, int count) {
   vec2 screen[MAX_POLYGON_CORNERS];
   vec3 values[MAX_POLYGON_CORNERS];
   for (int i = 0; i < count; ++i) {
-    vec4 clip = clipFromWorld * vec4(corners[first + uint(i)].position.xyz, 1.0);
+    vec4 clip = clipFromWorld * vec4(cornerPosition(first + uint(i)), 1.0);
     if (clip.w <= 0.0) return vB;
     screen[i] = windowOf(clip, viewportSize);
-    values[i] = corners[first + uint(i)].B.rgb;
+    values[i] = cornerB(first + uint(i));
   }
   vec3 B;
   return scanlineGouraud(count, screen, values, gl_FragCoord.xy, B) ? B : vB;
@@ -72,18 +72,18 @@ vec2 quadParameters(vec3 p0, vec3 p1, vec3 p2, vec3 p3) {
 // The 8-node serendipity quad (C&W §9.2's quadratic elements) on (xi, eta) = 2 (s, t) - 1, the
 // GLSL twin of the quad in renderer/interp/quadratic_lagrange.cpp.
 vec3 serendipity(uint first) {
-  vec2 q = 2.0 * quadParameters(corners[first].position.xyz, corners[first + 1u].position.xyz,
-                                 corners[first + 2u].position.xyz, corners[first + 3u].position.xyz) -
+  vec2 q = 2.0 * quadParameters(cornerPosition(first), cornerPosition(first + 1u),
+                                 cornerPosition(first + 2u), cornerPosition(first + 3u)) -
            1.0;
   float xi = q.x, eta = q.y;
   const vec2 corner[4] = vec2[](vec2(-1, -1), vec2(1, -1), vec2(1, 1), vec2(-1, 1));
   vec3 B = vec3(0.0);
   for (int i = 0; i < 4; ++i) {
     float a = corner[i].x, b = corner[i].y;
-    B += 0.25 * (1.0 + xi * a) * (1.0 + eta * b) * (xi * a + eta * b - 1.0) * corners[first + uint(i)].B.rgb;
+    B += 0.25 * (1.0 + xi * a) * (1.0 + eta * b) * (xi * a + eta * b - 1.0) * cornerB(first + uint(i));
   }
-  vec3 m0 = corners[first].midB.rgb, m1 = corners[first + 1u].midB.rgb;  // eta = -1, xi = +1
-  vec3 m2 = corners[first + 2u].midB.rgb, m3 = corners[first + 3u].midB.rgb;  // eta = +1, xi = -1
+  vec3 m0 = cornerMidB(first), m1 = cornerMidB(first + 1u);  // eta = -1, xi = +1
+  vec3 m2 = cornerMidB(first + 2u), m3 = cornerMidB(first + 3u);  // eta = +1, xi = -1
   return B + 0.5 * (1.0 - xi * xi) * ((1.0 - eta) * m0 + (1.0 + eta) * m2) +
          0.5 * (1.0 - eta * eta) * ((1.0 + xi) * m1 + (1.0 - xi) * m3);
 }
@@ -131,12 +131,12 @@ bool smallPolygonValue(out vec3 B) {
 void main() {
   vec3 B = vB;
 #if MODE == MODE_SERENDIPITY
-  B = serendipity(firstCorner[vElement]);
+  B = serendipity(firstCorner(vElement));
 #else
   if (!smallPolygonValue(B)) {
 #if MODE == MODE_SCANLINE
-    uint first = firstCorner[vElement];
-    B = scanline(first, int(firstCorner[vElement + 1u] - first));
+    uint first = firstCorner(vElement);
+    B = scanline(first, int(firstCorner(vElement + 1u) - first));
 #endif
   }
 #endif

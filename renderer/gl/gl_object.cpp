@@ -13,6 +13,9 @@ GlObject::GlObject(GlKind kind) : kind_(kind) {
     case GlKind::Texture2D:
       glCreateTextures(GL_TEXTURE_2D, 1, &id_);
       break;
+    case GlKind::TextureBuffer:
+      glCreateTextures(GL_TEXTURE_BUFFER, 1, &id_);
+      break;
     case GlKind::Framebuffer:
       glCreateFramebuffers(1, &id_);
       break;
@@ -39,6 +42,7 @@ void GlObject::reset() {
       glDeleteVertexArrays(1, &id_);
       break;
     case GlKind::Texture2D:
+    case GlKind::TextureBuffer:
       glDeleteTextures(1, &id_);
       break;
     case GlKind::Framebuffer:

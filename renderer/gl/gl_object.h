@@ -8,7 +8,7 @@
 
 namespace radview::gl {
 
-enum class GlKind { Buffer, VertexArray, Texture2D, Framebuffer, TimerQuery };
+enum class GlKind { Buffer, VertexArray, Texture2D, TextureBuffer, Framebuffer, TimerQuery };
 
 class GlObject {
  public:

@@ -110,6 +110,8 @@ MeshRenderer::MeshRenderer() {
 
   polygonCorners_ = GlObject(GlKind::Buffer);
   polygonOffsets_ = GlObject(GlKind::Buffer);
+  polygonCornerTexels_ = GlObject(GlKind::TextureBuffer);
+  polygonOffsetTexels_ = GlObject(GlKind::TextureBuffer);
   emptyVao_ = GlObject(GlKind::VertexArray);
   for (GlObject& query : timerQueries_) query = GlObject(GlKind::TimerQuery);
 }
@@ -300,9 +302,9 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
 }
 
 void MeshRenderer::uploadPolygons() {
-  // Element polygons (corners) for the scanline, bilinear and serendipity passes, std430: per
-  // corner vec4 position, vec4 B, vec4 B of the mid-edge node after it (serendipity quads
-  // only); offsets[e] .. offsets[e+1] are element e's.
+  // Element polygons (corners) for the scanline, bilinear and serendipity passes, read as
+  // buffer textures: per corner three texels, position, B, and the B of the mid-edge node
+  // after it (serendipity quads only); offsets[e] .. offsets[e+1] are element e's.
   std::vector<glm::vec4> corners;
   std::vector<uint32_t> offsets{0};
   offsets.reserve(mesh_->elements.size() + 1);
@@ -317,8 +319,16 @@ void MeshRenderer::uploadPolygons() {
     }
     offsets.push_back(uint32_t(corners.size() / 3));
   }
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  if (corners.size() > size_t(maxTexels))
+    throw Error("element polygons: " + std::to_string(corners.size() / 3) + " corners need " +
+                std::to_string(corners.size()) + " texels, more than this OpenGL's buffer textures hold (" +
+                std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
   glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
   glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
+  glTextureBuffer(polygonCornerTexels_, GL_RGBA32F, polygonCorners_);
+  glTextureBuffer(polygonOffsetTexels_, GL_R32UI, polygonOffsets_);
   polygonsUploaded_ = true;
 }
 
@@ -327,17 +337,19 @@ void MeshRenderer::drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, 
   if (!polygonsUploaded_) uploadPolygons();
   // A vertex reads its element's corners once where a pixel would read them for every covered
   // pixel: fewer reads while the draw has fewer vertices than the image has pixels, more beyond
-  // (1080p, radview_scale_bench: bilinear 1.45x Gouraud's frame time per vertex and 1.62x per
-  // pixel at 1.2e5 elements, 1.71x and 1.45x at 4.6e5).
+  // (1080p, radview_scale_bench: bilinear 1.30-1.37x Gouraud's frame time per vertex and
+  // 1.43-1.44x per pixel at 1.2e5 elements, 1.53-1.59x and 1.37-1.38x at 4.6e5).
   const bool perVertex = mode != PolygonMode::Serendipity && int64_t(vertices) < int64_t(width) * height;
   const ShaderProgram& program = perVertex ? polygonProgramsPerVertex_[int(mode)] : polygonPrograms_[int(mode)];
   program.set("clipFromWorld", clipFromWorld);
   program.set("viewportSize", glm::vec2(width, height));
   program.use();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, polygonCorners_);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, polygonOffsets_);
+  glBindTextureUnit(2, polygonCornerTexels_);
+  glBindTextureUnit(3, polygonOffsetTexels_);
   glBindVertexArray(vao);
   glDrawArrays(GL_TRIANGLES, 0, vertices);
+  glBindTextureUnit(2, 0);
+  glBindTextureUnit(3, 0);
 }
 
 void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& requested, int width, int height) {

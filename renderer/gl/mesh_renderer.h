@@ -146,7 +146,8 @@ class MeshRenderer {
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GlObject overlayVao_, overlayVbo_;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
-  GlObject polygonCorners_, polygonOffsets_;                // storage buffers: element polygons
+  GlObject polygonCorners_, polygonOffsets_;                // element polygons (lib/polygon_corners.glsl)
+  GlObject polygonCornerTexels_, polygonOffsetTexels_;      // the shaders read them as buffer textures
   bool polygonsUploaded_ = false;                           // only the methods that draw polygons need them
   void uploadPolygons();
   // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
