@@ -6,9 +6,8 @@
 // 4 MiB and more ask, through the one allocation function every C++ container uses. Smaller
 // blocks, and what C libraries allocate, are as before.
 //
-// Not under AddressSanitizer, which checks that what operator new returns is freed by
-// operator delete and not by free().
-#if !defined(__SANITIZE_ADDRESS__)
+// Not linked into the sanitizer build (app/CMakeLists.txt): AddressSanitizer checks that what
+// operator new returns is freed by its own operator delete, not by free().
 
 #include <sys/mman.h>
 
@@ -28,7 +27,7 @@ void* operator new(std::size_t size) {
   void* p = std::malloc(size == 0 ? 1 : size);
   if (!p) throw std::bad_alloc();
   if (size >= kHugePageAdviceFrom) {
-    // glibc serves a block this large from a mapping of its own: the advice covers its pages.
+    // From a mapping of its own or the top of glibc's heap: the advice covers the block's pages.
     constexpr std::uintptr_t kPage = 4096;
     const std::uintptr_t begin = std::uintptr_t(p) & ~(kPage - 1);
     const std::uintptr_t end = (std::uintptr_t(p) + size + kPage - 1) & ~(kPage - 1);
@@ -36,5 +35,3 @@ void* operator new(std::size_t size) {
   }
   return p;
 }
-
-#endif
