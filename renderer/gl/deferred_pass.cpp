@@ -18,11 +18,21 @@ DeferredPass::DeferredPass() {
   glCreateBuffers(1, &nets_);
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &netsTexture_);
   glCreateVertexArrays(1, &emptyVao_);
+  // Clough-Tocher's one pass: the corners, and each vertex's 3 vec4 of the values.
+  glCreateVertexArrays(1, &cornerValuesVao_);
+  glVertexArrayVertexBuffer(cornerValuesVao_, 0, corners_, 0, sizeof(glm::vec3));
+  glVertexArrayVertexBuffer(cornerValuesVao_, 1, nets_, 0, GLsizei(kNetVec4s / 3 * sizeof(glm::vec4)));
+  for (GLuint a = 0; a < 4; ++a) {
+    glEnableVertexArrayAttrib(cornerValuesVao_, a);
+    glVertexArrayAttribFormat(cornerValuesVao_, a, a == 0 ? 3 : 4, GL_FLOAT, GL_FALSE,
+                              a == 0 ? 0 : GLuint((a - 1) * sizeof(glm::vec4)));
+    glVertexArrayAttribBinding(cornerValuesVao_, a, a == 0 ? 0 : 1);
+  }
 }
 
 DeferredPass::~DeferredPass() {
-  GLuint arrays[] = {vao_, emptyVao_};
-  glDeleteVertexArrays(2, arrays);
+  GLuint arrays[] = {vao_, emptyVao_, cornerValuesVao_};
+  glDeleteVertexArrays(3, arrays);
   GLuint buffers[] = {corners_, nets_};
   glDeleteBuffers(2, buffers);
   glDeleteTextures(1, &netsTexture_);
@@ -84,7 +94,7 @@ void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
   program.set("nets", 1);
   program.use();
   glBindTextureUnit(1, netsTexture_);
-  glBindVertexArray(vao_);
+  glBindVertexArray(degree_ == 3 ? cornerValuesVao_ : vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
   glBindTextureUnit(1, 0);
 }

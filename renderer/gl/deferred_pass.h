@@ -39,8 +39,9 @@ class DeferredPass {
   // surfaces' depth behind. Deferred: the visibility raster writes into that colour texture
   // what each pixel sees, (triangle + 1, lambda), 0 for the background; the evaluation then
   // reads each pixel's own texel and overwrites it, so that no visibility buffer is needed
-  // beside it. Or in one pass, each vertex reading its triangle's values, while the draw has
-  // fewer vertices than the viewport has pixels: that reads less (README, "At scale").
+  // beside it. Or in one pass while the draw has fewer vertices than the viewport has pixels,
+  // which reads less (README, "At scale"): each Clough-Tocher vertex reads its own corner's
+  // values as vertex attributes, each C1 quadratic vertex its triangle's as texels.
   void draw(const glm::mat4& clipFromWorld, GLuint target);
 
  private:
@@ -57,7 +58,7 @@ class DeferredPass {
                                program("c1_forward.vert", "c1_forward.frag", 3)};
   // Triangle numbers travel as floats, exact below 2^24.
   static constexpr size_t kMaxTriangles = size_t(1) << 24;
-  GLuint vao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
+  GLuint vao_ = 0, cornerValuesVao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
   size_t triangles_ = 0;
   int degree_ = 3;
 };

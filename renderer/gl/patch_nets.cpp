@@ -99,7 +99,12 @@ void writeNet(const CloughTocherPatch& patch, glm::vec3* corners, glm::vec4* net
   for (const PackingTerm& term : cloughTocherPacking())
     packed[term.packed] +=
         term.weight * (term.input < 10 ? patch.control[1][term.input] : patch.control[2][term.input - 10]);
-  for (size_t v = 0; v < packed.size(); ++v) pack(net, v, packed[v]);
+  // By corner (patch_nets.h).
+  static constexpr size_t kByCorner[12] = {
+      bezierIndex(3, 3, 0), bezierIndex(3, 1, 2), bezierIndex(3, 1, 0), bezierIndex(3, 2, 0),
+      bezierIndex(3, 2, 1), bezierIndex(3, 0, 3), bezierIndex(3, 0, 1), bezierIndex(3, 1, 1),
+      10,                   bezierIndex(3, 0, 2), bezierIndex(3, 0, 0), 11};
+  for (size_t v = 0; v < packed.size(); ++v) pack(net, v, packed[kByCorner[v]]);
 }
 
 void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net) {

@@ -16,9 +16,15 @@ namespace radview::gl {
 // coordinates, so the C1 piecewise cubics on it are the cubics plus two fixed functions
 // (a cubic's 10 values, the element's 12):
 //   B(lambda) = P(lambda) + alpha psi_1(lambda) + beta psi_2(lambda),
-// P the polynomial of the piece where lambda_0 is the smallest, values 0-9 its Bezier net in
-// lambda (order of bezierIndex) times the Bernstein weights 3!/(i! j! k!), alpha and beta
-// values 10 and 11. psi vanishes where lambda_0
+// P the polynomial of the piece where lambda_0 is the smallest, its Bezier net in lambda times
+// the Bernstein weights 3!/(i! j! k!), p_ijk for the monomial u^i v^j w^k, (u, v, w) = lambda.
+// The values are grouped by corner, four each, so that each vertex of the one-pass draw reads
+// only its own (c1_forward.vert): corner k holds values whose monomial has a factor lambda_k,
+// one for each of the monomials u^2, v^2, w^2, u w that is left when lambda_k is taken out
+// (0 where none is), and P = S_uu u^2 + S_vv v^2 + S_ww w^2 + S_uw u w with S the corners'
+// values interpolated linearly:
+//   corner 0: p300, p120, p102, p201;  corner 1: p210, p030, p012, p111;
+//   corner 2: alpha, p021, p003, beta  (its u^2 and u w values are 0). psi vanishes where lambda_0
 // is the smallest; where lambda_1 is, psi_1 = (lambda_1 - lambda_0)^2 (lambda_0 + lambda_1 -
 // 2 lambda_2) and psi_2 = (lambda_1 - lambda_0)^2 (lambda_2 - lambda_0); where lambda_2 is,
 // psi_1 = (lambda_2 - lambda_0)^2 (lambda_0 - lambda_1) and psi_2 = (lambda_2 - lambda_0)^2

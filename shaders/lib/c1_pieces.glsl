@@ -13,20 +13,36 @@ vec3 pick(int i, vec3 a, vec3 b, vec3 c) { return i == 0 ? a : (i == 1 ? b : c);
 // Clough-Tocher (C&W §9.2.2, fig. 9.12) as patch_nets.h packs it: the cubic P of the piece
 // where lambda_0 is the smallest, over the whole triangle, plus alpha psi_1 + beta psi_2, the
 // C1 corrections that make it the piece where lambda_1 or lambda_2 is the smallest. P's
-// control values come scaled by their Bernstein weights 3!/(i! j! k!), so that eq. 9.7 is
-// one nested sum in (u, v, w) = lambda.
-vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
+// control values come scaled by their Bernstein weights 3!/(i! j! k!), each held by a corner
+// k whose lambda_k divides its monomial: P = S_uu u^2 + S_vv v^2 + S_ww w^2 + S_uw u w in
+// (u, v, w) = lambda, each S the sum over corners of lambda_k times the corner's value, that
+// is, the linear interpolation of the corners' values (patch_nets.h lists them). The one-pass
+// shader gets the S as interpolated outputs, so that each vertex reads only its own corner.
+vec3 cubicFromSums(vec3 lambda, vec3 uu, vec3 vv, vec3 ww, vec3 uw) {
   float u = lambda.x, v = lambda.y, w = lambda.z;
-  vec3 p = u * (u * (u * n[0].xyz + v * vec3(n[0].w, n[1].xy) + w * vec3(n[1].zw, n[2].x)) +
-                v * (v * n[2].yzw + w * n[3].xyz) + (w * w) * vec3(n[3].w, n[4].xy)) +
-           v * (v * (v * vec3(n[4].zw, n[5].x) + w * n[5].yzw) + (w * w) * n[6].xyz) +
-           (w * w * w) * vec3(n[6].w, n[7].xy);
-  vec3 alpha = vec3(n[7].zw, n[8].x), beta = n[8].yzw;
+  return (u * u) * uu + (v * v) * vv + (w * w) * ww + (u * w) * uw;
+}
+
+// alpha psi_1 + beta psi_2 at lambda (patch_nets.h).
+vec3 cloughTocherCorrection(vec3 lambda, vec3 alpha, vec3 beta) {
+  float u = lambda.x, v = lambda.y, w = lambda.z;
   int o = smallest(lambda);
   float across = o == 0 ? 0.0 : (o == 1 ? v - u : w - u);
   float wAlpha = o == 1 ? u + v - 2.0 * w : u - v;
   float wBeta = o == 1 ? w - u : 2.0 * v - u - w;
-  return p + (across * across) * (wAlpha * alpha + wBeta * beta);
+  return (across * across) * (wAlpha * alpha + wBeta * beta);
+}
+
+// The value from the packed values of the whole triangle (the deferred pass): corner k's
+// values are vec3 4 k .. 4 k + 3, corner 2's first and last being alpha and beta.
+vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
+  vec3 c[12] = vec3[](n[0].xyz, vec3(n[0].w, n[1].xy), vec3(n[1].zw, n[2].x), n[2].yzw, n[3].xyz,
+                      vec3(n[3].w, n[4].xy), vec3(n[4].zw, n[5].x), n[5].yzw, n[6].xyz, vec3(n[6].w, n[7].xy),
+                      vec3(n[7].zw, n[8].x), n[8].yzw);
+  float u = lambda.x, v = lambda.y, w = lambda.z;
+  return cubicFromSums(lambda, u * c[0] + v * c[4], u * c[1] + v * c[5] + w * c[9], u * c[2] + v * c[6] + w * c[10],
+                       u * c[3] + v * c[7]) +
+         cloughTocherCorrection(lambda, c[8], c[11]);
 }
 #else
 // Powell-Sabin (C&W §9.2.2, fig. 9.9; Reichert): the fan triangle (V_k, V_k1, Z) with the
