@@ -7,7 +7,8 @@ in vec3 vLambda;
 in vec3 vUU, vVV, vWW, vUW;
 flat in vec3 vAlpha, vBeta;
 #else
-flat in vec4 vNet[NET_VEC4S];
+in vec3 vSumU, vSumV, vSumW;
+flat in vec3 vE0, vE1, vE2, vZeta, vSplit;
 #endif
 
 layout(location = 0) out vec4 radiosity;
@@ -16,6 +17,6 @@ void main() {
 #if DEGREE == 3
   radiosity = vec4(cubicFromSums(vLambda, vUU, vVV, vWW, vUW) + cloughTocherCorrection(vLambda, vAlpha, vBeta), 1.0);
 #else
-  radiosity = vec4(c1Value(vNet, vLambda), 1.0);
+  radiosity = vec4(quadraticFromSums(vLambda, vSumU, vSumV, vSumW) + powellSabinRest(vLambda, vE0, vE1, vE2, vZeta, vSplit), 1.0);
 #endif
 }

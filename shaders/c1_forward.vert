@@ -31,16 +31,29 @@ void main() {
   vBeta = last;
 }
 #else
-// C1 quadratic: each vertex reads its triangle's packed values once, as flat outputs.
-layout(binding = 1) uniform samplerBuffer nets;
-flat out vec4 vNet[NET_VEC4S];
+// C1 quadratic: likewise each vertex reads its corner's two values of the sums; e, zeta and t
+// are flat, the first vertex's, which reads them from the other corners' 12 floats too: five
+// vec4 a vertex in all, where its triangle's values as texels took nine.
+layout(location = 1) in vec4 own0;  // floats 0-3 of the corner's 12
+layout(location = 2) in vec4 own1;  // 4-7
+layout(location = 3) in vec4 own2;  // 8-11
+layout(location = 4) in vec4 next;  // 18-21: the next corner's e and t
+layout(location = 5) in vec4 last;  // 30-33: the last corner's
+out vec3 vSumU, vSumV, vSumW;
+flat out vec3 vE0, vE1, vE2, vZeta, vSplit;
 
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
   int corner = gl_VertexID % 3;
   vLambda = vec3(corner == 0, corner == 1, corner == 2);
-  // From the vertex index, not gl_PrimitiveID: llvmpipe gets the latter wrong in large draws.
-  int first = (gl_VertexID / 3) * NET_VEC4S;
-  for (int i = 0; i < NET_VEC4S; ++i) vNet[i] = texelFetch(nets, first + i);
+  vec3 a = own0.xyz, b = vec3(own0.w, own1.xy);
+  vSumU = corner == 2 ? vec3(0.0) : a;
+  vSumV = corner == 0 ? vec3(0.0) : (corner == 1 ? b : a);
+  vSumW = corner == 1 ? vec3(0.0) : b;
+  vE0 = vec3(own1.zw, own2.x);
+  vE1 = next.xyz;
+  vE2 = last.xyz;
+  vZeta = vec3(own2.zw, 1.0 - own2.z - own2.w);
+  vSplit = vec3(own2.y, next.w, last.w);
 }
 #endif

@@ -18,21 +18,34 @@ DeferredPass::DeferredPass() {
   glCreateBuffers(1, &nets_);
   glCreateTextures(GL_TEXTURE_BUFFER, 1, &netsTexture_);
   glCreateVertexArrays(1, &emptyVao_);
-  // Clough-Tocher's one pass: the corners, and each vertex's 3 vec4 of the values.
-  glCreateVertexArrays(1, &cornerValuesVao_);
-  glVertexArrayVertexBuffer(cornerValuesVao_, 0, corners_, 0, sizeof(glm::vec3));
-  glVertexArrayVertexBuffer(cornerValuesVao_, 1, nets_, 0, GLsizei(kNetVec4s / 3 * sizeof(glm::vec4)));
-  for (GLuint a = 0; a < 4; ++a) {
-    glEnableVertexArrayAttrib(cornerValuesVao_, a);
-    glVertexArrayAttribFormat(cornerValuesVao_, a, a == 0 ? 3 : 4, GL_FLOAT, GL_FALSE,
-                              a == 0 ? 0 : GLuint((a - 1) * sizeof(glm::vec4)));
-    glVertexArrayAttribBinding(cornerValuesVao_, a, a == 0 ? 0 : 1);
+  // The one pass: the corners, and from each vertex's corner's 48 bytes on, its own values
+  // (and the first vertex's the other corners' for C1 quadratic: c1_forward.vert).
+  struct Attribute {
+    GLint size;
+    GLuint offset;
+  };
+  const std::vector<Attribute> attributes[2] = {{{4, 0}, {4, 16}, {4, 32}, {4, 72}, {4, 120}},
+                                                {{4, 0}, {4, 16}, {4, 32}}};
+  for (int cubic = 0; cubic < 2; ++cubic) {
+    GLuint& vao = oneCornerVao_[cubic];
+    glCreateVertexArrays(1, &vao);
+    glVertexArrayVertexBuffer(vao, 0, corners_, 0, sizeof(glm::vec3));
+    glVertexArrayVertexBuffer(vao, 1, nets_, 0, GLsizei(kNetVec4s / 3 * sizeof(glm::vec4)));
+    glEnableVertexArrayAttrib(vao, 0);
+    glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vao, 0, 0);
+    for (size_t a = 0; a < attributes[cubic].size(); ++a) {
+      glEnableVertexArrayAttrib(vao, GLuint(a + 1));
+      glVertexArrayAttribFormat(vao, GLuint(a + 1), attributes[cubic][a].size, GL_FLOAT, GL_FALSE,
+                                attributes[cubic][a].offset);
+      glVertexArrayAttribBinding(vao, GLuint(a + 1), 1);
+    }
   }
 }
 
 DeferredPass::~DeferredPass() {
-  GLuint arrays[] = {vao_, emptyVao_, cornerValuesVao_};
-  glDeleteVertexArrays(3, arrays);
+  GLuint arrays[] = {vao_, emptyVao_, oneCornerVao_[0], oneCornerVao_[1]};
+  glDeleteVertexArrays(4, arrays);
   GLuint buffers[] = {corners_, nets_};
   glDeleteBuffers(2, buffers);
   glDeleteTextures(1, &netsTexture_);
@@ -52,7 +65,8 @@ void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
                 " texels of control values, more than this OpenGL's buffer textures hold (" +
                 std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
   glNamedBufferData(corners_, GLsizeiptr(3 * triangles * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
-  glNamedBufferData(nets_, GLsizeiptr(vec4s * triangles * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
+  // One triangle more: the one pass's last vertex reads up to 88 bytes past its triangle's.
+  glNamedBufferData(nets_, GLsizeiptr(vec4s * (triangles + 1) * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
   constexpr size_t kBlock = 16384;
   std::vector<glm::vec3> corners(3 * std::min(kBlock, triangles));
   std::vector<glm::vec4> nets(vec4s * std::min(kBlock, triangles));
@@ -91,12 +105,12 @@ void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   const ShaderProgram& program = forward_[degree_ == 3];
   program.set("clipFromWorld", clipFromWorld);
-  program.set("nets", 1);
   program.use();
-  glBindTextureUnit(1, netsTexture_);
-  glBindVertexArray(degree_ == 3 ? cornerValuesVao_ : vao_);
+  glBindVertexArray(oneCornerVao_[degree_ == 3]);
+  // C1 quadratic's flat outputs are those of the vertex that reads all three corners.
+  if (degree_ == 2) glProvokingVertex(GL_FIRST_VERTEX_CONVENTION);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
-  glBindTextureUnit(1, 0);
+  glProvokingVertex(GL_LAST_VERTEX_CONVENTION);
 }
 
 void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {

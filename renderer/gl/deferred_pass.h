@@ -58,7 +58,7 @@ class DeferredPass {
                                program("c1_forward.vert", "c1_forward.frag", 3)};
   // Triangle numbers travel as floats, exact below 2^24.
   static constexpr size_t kMaxTriangles = size_t(1) << 24;
-  GLuint vao_ = 0, cornerValuesVao_ = 0, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
+  GLuint vao_ = 0, oneCornerVao_[2] = {}, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
   size_t triangles_ = 0;
   int degree_ = 3;
 };

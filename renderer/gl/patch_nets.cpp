@@ -19,8 +19,6 @@ void pack(glm::vec4* out, size_t i, const Rgb& value) {
   for (size_t c = 0; c < 3; ++c) out[(3 * i + c) / 4][(3 * i + c) % 4] = float(value[c]);
 }
 
-glm::vec4 withW(const Rgb& value, double w) { return glm::vec4(glm::vec3(value), float(w)); }
-
 // One step of de Casteljau's algorithm at x: the degree n net b becomes the degree n - 1 net
 // of the blossom with x as one argument (C&W eq. 9.7; affine, so x may lie outside).
 std::array<Rgb, 10> reduceDegree(int n, const std::array<Rgb, 10>& b, const Vec3& x) {
@@ -112,13 +110,35 @@ void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net)
   // Piece 2 k is (f_k, bVR_k, ...) and 2 k + 1 (f_k+1, bV1R_k, ...), b200 b110 first; bVR_k =
   // f_k + t_k D_k / 2 and bV1R_k = f_k+1 + (1 - t_k) E_k / 2 (powell_sabin.cpp), so D and E
   // come back from them exactly but for rounding, also where a degenerate triangle is linear.
+  std::array<Rgb, 3> f, D, E;
   for (int k = 0; k < 3; ++k) {
     const auto &near = patch.control[2 * k], &far = patch.control[2 * k + 1];
     const double t = patch.t[k];
-    net[k] = withW(near[0], patch.zeta[k]);
-    net[3 + k] = withW(2.0 * (near[1] - near[0]) / t, t);
-    net[6 + k] = withW(2.0 * (far[1] - far[0]) / (1.0 - t), 0.0);
+    f[k] = near[0];
+    D[k] = 2.0 * (near[1] - near[0]) / t;
+    E[k] = 2.0 * (far[1] - far[0]) / (1.0 - t);
   }
+  // Corner k's two values of the sums (Q's Bezier net in lambda, b200 = f_0 and b110 = f_0 +
+  // D_0 / 2 and so on, times its Bernstein weights), then e_k and t_k (patch_nets.h).
+  const std::array<std::array<Rgb, 2>, 3> sums = {{{f[0], 2.0 * f[2] + D[2]},  //
+                                                   {2.0 * f[0] + D[0], f[1]},  //
+                                                   {2.0 * f[1] + D[1], f[2]}}};
+  float* out = &net[0].x;
+  for (int k = 0; k < 3; ++k) {
+    const int k1 = (k + 1) % 3;
+    // Q's derivative along edge k from V_k+1 is D_k - 2 (f_k+1 - f_k): a quadratic's
+    // derivatives at the ends of a segment average to its difference quotient.
+    const Rgb e = E[k] - D[k] + 2.0 * (f[k1] - f[k]);
+    const Rgb values[3] = {sums[k][0], sums[k][1], e};
+    for (int v = 0; v < 3; ++v)
+      for (int c = 0; c < 3; ++c) out[12 * k + 3 * v + c] = float(values[v][c]);
+    out[12 * k + 9] = float(patch.t[k]);
+    out[12 * k + 10] = out[12 * k + 11] = 0.0f;
+  }
+  // zeta sums to 1: the first corner holds two of them, so that the one pass's first vertex
+  // finds all it needs in 5 vec4 (c1_forward.vert).
+  out[10] = float(patch.zeta[0]);
+  out[11] = float(patch.zeta[1]);
 }
 
 }  // namespace radview::gl

@@ -45,29 +45,42 @@ vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
          cloughTocherCorrection(lambda, c[8], c[11]);
 }
 #else
-// Powell-Sabin (C&W §9.2.2, fig. 9.9; Reichert): the fan triangle (V_k, V_k1, Z) with the
-// smallest mu = lambda_o / zeta_o, then the side of the line Z - R_k, as powell_sabin.cpp's
-// evaluate chooses. The control values are buildPowellSabin's, from the corner values f and
-// the derivatives along the edges packed with them (patch_nets.h): at (V_k + R_k)/2 f_k +
-// t_k D_k / 2, at (V_k1 + R_k)/2 f_k1 + (1 - t_k) E_k / 2, at (V_i + Z)/2 f_i + (zeta_i+1 D_i +
-// zeta_i+2 E_i+2) / 2 (Z - V_i along the two edges from V_i), and the means between them.
-vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
-  vec3 zeta = vec3(n[0].w, n[1].w, n[2].w);
-  vec3 z0 = n[0].xyz + 0.5 * (zeta.y * n[3].xyz + zeta.z * n[8].xyz);
-  vec3 z1 = n[1].xyz + 0.5 * (zeta.z * n[4].xyz + zeta.x * n[6].xyz);
-  vec3 z2 = n[2].xyz + 0.5 * (zeta.x * n[5].xyz + zeta.y * n[7].xyz);
+// Powell-Sabin (C&W §9.2.2, fig. 9.9; Reichert) as patch_nets.h packs it: the quadratic Q with
+// the corner values f and the derivatives D_k along each edge k from its first corner, plus
+// the Powell-Sabin spline with those 0 and, along each edge from its second corner, the
+// derivative e_k by which the element's differs from Q's: the spline reproduces quadratics
+// and is linear in its data. Q = u S_u + v S_v + w S_w in (u, v, w) = lambda, each S the
+// linear interpolation of the corners' values, as for Clough-Tocher above.
+vec3 quadraticFromSums(vec3 lambda, vec3 su, vec3 sv, vec3 sw) { return lambda.x * su + lambda.y * sv + lambda.z * sw; }
+
+// The rest: the fan triangle (V_k, V_k1, Z) with the smallest mu = lambda_o / zeta_o, then
+// the side of the line Z - R_k, as powell_sabin.cpp's evaluate chooses, and its control values
+// as buildPowellSabin's with f = D = 0: at (V_k1 + R_k)/2 (1 - t_k) e_k / 2, at (V_i + Z)/2
+// zeta_i+2 e_i+2 / 2 (Z - V_i along the edge into V_i), the means between them, 0 elsewhere.
+vec3 powellSabinRest(vec3 lambda, vec3 e0, vec3 e1, vec3 e2, vec3 zeta, vec3 split) {
+  vec3 z0 = (0.5 * zeta.z) * e2, z1 = (0.5 * zeta.x) * e0, z2 = (0.5 * zeta.y) * e1;
   int o = smallest(lambda / zeta), k = (o + 1) % 3, k1 = (k + 1) % 3;
-  float t = vec3(n[3].w, n[4].w, n[5].w)[k];
-  vec3 fk = pick(k, n[0].xyz, n[1].xyz, n[2].xyz), fk1 = pick(k1, n[0].xyz, n[1].xyz, n[2].xyz);
-  vec3 nearR = fk + 0.5 * t * pick(k, n[3].xyz, n[4].xyz, n[5].xyz);
-  vec3 farR = fk1 + 0.5 * (1.0 - t) * pick(k, n[6].xyz, n[7].xyz, n[8].xyz);
+  float t = split[k];
+  vec3 farR = (0.5 * (1.0 - t)) * pick(k, e0, e1, e2);
   vec3 zk = pick(k, z0, z1, z2), zk1 = pick(k1, z0, z1, z2);
   float mu = lambda[o] / zeta[o];
   float a = lambda[k] - mu * zeta[k], b = lambda[k1] - mu * zeta[k1];
   bool nearSide = b * (1.0 - t) <= a * t;
-  vec3 c[6] = vec3[](nearSide ? fk : fk1, nearSide ? nearR : farR, nearSide ? zk : zk1, (1.0 - t) * nearR + t * farR,
-                     (1.0 - t) * zk + t * zk1, zeta.x * z0 + zeta.y * z1 + zeta.z * z2);
+  vec3 c[6] = vec3[](vec3(0.0), nearSide ? vec3(0.0) : farR, nearSide ? zk : zk1, t * farR, (1.0 - t) * zk + t * zk1,
+                     zeta.x * z0 + zeta.y * z1 + zeta.z * z2);
   vec3 sigma = nearSide ? vec3(a - b * (1.0 - t) / t, b / t, mu) : vec3(b - a * t / (1.0 - t), a / (1.0 - t), mu);
   return quadraticBernstein(c, sigma);
+}
+
+// The value from the packed values of the whole triangle (the deferred pass): corner k's 12
+// floats from 12 k are its two values of the sums, e_k and t_k; floats 10 and 11 zeta_0 and
+// zeta_1.
+vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
+  vec3 a0 = n[0].xyz, b0 = vec3(n[0].w, n[1].xy), e0 = vec3(n[1].zw, n[2].x);
+  vec3 a1 = n[3].xyz, b1 = vec3(n[3].w, n[4].xy), e1 = vec3(n[4].zw, n[5].x);
+  vec3 a2 = n[6].xyz, b2 = vec3(n[6].w, n[7].xy), e2 = vec3(n[7].zw, n[8].x);
+  float u = lambda.x, v = lambda.y, w = lambda.z;
+  return quadraticFromSums(lambda, u * a0 + v * a1, v * b1 + w * a2, u * b0 + w * b2) +
+         powellSabinRest(lambda, e0, e1, e2, vec3(n[2].zw, 1.0 - n[2].z - n[2].w), vec3(n[2].y, n[5].y, n[8].y));
 }
 #endif
