@@ -1,17 +1,17 @@
 #pragma once
 // The C1 interpolants as the per-pixel passes read them (gl/deferred_pass.h): each element
-// triangle once, its three corners for the raster, and its pieces in 12 RGB values, packed for
-// a buffer the shaders index by triangle. A triangle takes 144 bytes where the pieces' nets
-// take 384 (Clough-Tocher) or 512 (Powell-Sabin). Computed in double from the patches the CPU
-// evaluates (c1_patches.h) and rounded to float once; the shader reads whole vec4s, as on
-// llvmpipe each read is a gather per pixel. No OpenGL here.
+// triangle once, its three corners for the raster, and its pieces in 36 floats, 12 per corner,
+// packed for a buffer read per pixel by triangle or per vertex by corner. A triangle takes 144
+// bytes where the pieces' nets take 384 (Clough-Tocher) or 512 (Powell-Sabin). Computed in
+// double from the patches the CPU evaluates (c1_patches.h) and rounded to float once; the
+// shaders read whole vec4s, as on llvmpipe each read is a gather. No OpenGL here.
 #include "interp/c1_patches.h"
 
 #include <glm/glm.hpp>
 
 namespace radview::gl {
 
-// Both C1 methods pack 12 RGB values, three floats each, and what picks the piece into 9 vec4.
+// Both C1 methods pack 12 floats per corner of each triangle, 9 vec4 in all.
 // Clough-Tocher: the split at the centroid is the same in every triangle's barycentric
 // coordinates, so the C1 piecewise cubics on it are the cubics plus two fixed functions
 // (a cubic's 10 values, the element's 12):
@@ -31,10 +31,16 @@ namespace radview::gl {
 // (2 lambda_1 - lambda_0 - lambda_2). Each joins its neighbours C1 across the inner edges
 // (a difference of cubics with a double zero along a line is that line squared times a linear
 // function). A pixel then evaluates one cubic and a correction, not a piece chosen from three.
-// Powell-Sabin: vec4 i = (f_i, zeta_i); 3 + k = (D_k, t_k); 6 + k = (E_k, 0), with zeta the
-// split point's barycentric coordinates, t_k the edge split parameters, and D_k, E_k the
-// derivatives of B along edge k from either end, grad f_k . (V_k+1 - V_k) and
-// grad f_k+1 . (V_k - V_k+1): every control value is f plus a multiple of them (C&W fig. 9.9).
+// Powell-Sabin: with f the corner values and D_k, E_k the derivatives of B along edge k from
+// either end, grad f_k . (V_k+1 - V_k) and grad f_k+1 . (V_k - V_k+1), every control value is
+// f plus a multiple of them (C&W fig. 9.9), and the spline is linear in them and reproduces
+// quadratics: B = Q + R, Q the quadratic with the values f and the derivatives D, R the
+// spline with f = D = 0 and E = e, e_k = E_k - D_k + 2 (f_k+1 - f_k) (Q's own E_k is
+// D_k - 2 (f_k+1 - f_k)). Q = u S_u + v S_v + w S_w, each S interpolated from two corners
+// (lib/c1_pieces.glsl): corner 0 holds f_0 (of S_u) and 2 f_2 + D_2 (S_w), corner 1 2 f_0 +
+// D_0 (S_u) and f_1 (S_v), corner 2 2 f_1 + D_1 (S_v) and f_2 (S_w). Corner k's 12 floats are
+// those two, e_k, t_k (the edge split parameter) and two more: zeta_0 and zeta_1 (the split
+// point's barycentric coordinates, which sum to 1) at corner 0, zeros at the others.
 inline constexpr size_t kNetVec4s = 9;
 
 // Writes the patch's corners (3) and its packed values (kNetVec4s).
