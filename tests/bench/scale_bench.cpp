@@ -9,6 +9,7 @@
 // light, set-up, one frame, PNG), once per method per round, interleaved the same way: its
 // peak resident memory (as /usr/bin/time -f %M reports it; on llvmpipe the GPU's buffers are
 // part of it) and its wall time, each with its median ratio to Gouraud's in the same round.
+// Every ratio comes with its range over the rounds, how far one round can be trusted.
 //   build/radview_scale_bench [--element-size S]... [--rounds N] [--render-rounds N] [--size WxH]
 //                             [--methods gouraud,clough-tocher]
 #include "core/camera.h"
@@ -53,12 +54,15 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
 }
 
-// The median over rounds of a method's time over Gouraud's in the same round: a slow spell
-// that lasts a round slows both sides of each ratio alike.
-double medianRatio(const std::vector<double>& method, const std::vector<double>& gouraud) {
+// A method's time over Gouraud's in the same round, over rounds: a slow spell that lasts a
+// round slows both sides of each ratio alike. "median (lowest-highest)".
+std::string ratioOverRounds(const std::vector<double>& method, const std::vector<double>& gouraud) {
   std::vector<double> ratios(method.size());
   for (size_t r = 0; r < method.size(); ++r) ratios[r] = method[r] / gouraud[r];
-  return quantile(ratios, 0.5);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.2f (%.2f-%.2f)", quantile(ratios, 0.5), quantile(ratios, 0.0),
+                quantile(ratios, 1.0));
+  return text;
 }
 
 struct RenderRun {
@@ -163,11 +167,11 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
   std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n", mesh.elements.size(),
               elementSize, meshSeconds, width, height, rounds);
   std::printf(
-      "| method | median ms | IQR ms | / Gouraud | first frame s |\n"
+      "| method | median ms | IQR ms | / Gouraud (range over rounds) | first frame s |\n"
       "|---|---|---|---|---|\n");
   for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.1f | %.1f-%.1f | %.2f | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), medianRatio(ms[i], ms[0]), firstFrame[i]);
+    std::printf("| %s | %.1f | %.1f-%.1f | %s | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
+                quantile(ms[i], 0.25), quantile(ms[i], 0.75), ratioOverRounds(ms[i], ms[0]).c_str(), firstFrame[i]);
   std::fflush(stdout);
   if (renderRounds == 0) return;
   renderers.clear();
@@ -179,11 +183,12 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
       peakMb[i].push_back(run.peakMb);
       seconds[i].push_back(run.seconds);
     }
-  std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud | wall s | / Gouraud |\n|---|---|---|---|---|\n",
+  std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud (range) | wall s | / Gouraud (range) |\n|---|---|---|---|---|\n",
               renderRounds);
   for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.0f | %.2f | %.2f | %.2f |\n", variants[i].name, quantile(peakMb[i], 0.5),
-                medianRatio(peakMb[i], peakMb[0]), quantile(seconds[i], 0.5), medianRatio(seconds[i], seconds[0]));
+    std::printf("| %s | %.0f | %s | %.2f | %s |\n", variants[i].name, quantile(peakMb[i], 0.5),
+                ratioOverRounds(peakMb[i], peakMb[0]).c_str(), quantile(seconds[i], 0.5),
+                ratioOverRounds(seconds[i], seconds[0]).c_str());
   std::fflush(stdout);
 }
 
@@ -193,7 +198,7 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
 int main(int argc, char** argv) {
   using namespace radview;
   std::vector<double> sizes;
-  int rounds = 15, renderRounds = 3, width = 1920, height = 1080;
+  int rounds = 15, renderRounds = 5, width = 1920, height = 1080;
   std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--element-size"))
