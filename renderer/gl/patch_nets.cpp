@@ -111,7 +111,7 @@ void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net)
   // f_k + t_k D_k / 2 and bV1R_k = f_k+1 + (1 - t_k) E_k / 2 (powell_sabin.cpp), so D and E
   // come back from them exactly but for rounding, also where a degenerate triangle is linear.
   std::array<Rgb, 3> f, D, E;
-  for (int k = 0; k < 3; ++k) {
+  for (size_t k = 0; k < 3; ++k) {
     const auto &near = patch.control[2 * k], &far = patch.control[2 * k + 1];
     const double t = patch.t[k];
     f[k] = near[0];
@@ -123,22 +123,20 @@ void writeNet(const PowellSabinPatch& patch, glm::vec3* corners, glm::vec4* net)
   const std::array<std::array<Rgb, 2>, 3> sums = {{{f[0], 2.0 * f[2] + D[2]},  //
                                                    {2.0 * f[0] + D[0], f[1]},  //
                                                    {2.0 * f[1] + D[1], f[2]}}};
-  float* out = &net[0].x;
-  for (int k = 0; k < 3; ++k) {
-    const int k1 = (k + 1) % 3;
+  for (size_t k = 0; k < 3; ++k) {
+    const size_t k1 = (k + 1) % 3;
     // Q's derivative along edge k from V_k+1 is D_k - 2 (f_k+1 - f_k): a quadratic's
     // derivatives at the ends of a segment average to its difference quotient.
     const Rgb e = E[k] - D[k] + 2.0 * (f[k1] - f[k]);
-    const Rgb values[3] = {sums[k][0], sums[k][1], e};
-    for (int v = 0; v < 3; ++v)
-      for (int c = 0; c < 3; ++c) out[12 * k + 3 * v + c] = float(values[v][c]);
-    out[12 * k + 9] = float(patch.t[k]);
-    out[12 * k + 10] = out[12 * k + 11] = 0.0f;
+    pack(net, 4 * k, sums[k][0]);
+    pack(net, 4 * k + 1, sums[k][1]);
+    pack(net, 4 * k + 2, e);
+    // zeta sums to 1: the first corner holds two of them beside its t, so that the one pass's
+    // first vertex finds all it needs in 5 vec4 (c1_forward.vert).
+    net[3 * k + 2].y = float(patch.t[k]);
+    net[3 * k + 2].z = k == 0 ? float(patch.zeta[0]) : 0.0f;
+    net[3 * k + 2].w = k == 0 ? float(patch.zeta[1]) : 0.0f;
   }
-  // zeta sums to 1: the first corner holds two of them, so that the one pass's first vertex
-  // finds all it needs in 5 vec4 (c1_forward.vert).
-  out[10] = float(patch.zeta[0]);
-  out[11] = float(patch.zeta[1]);
 }
 
 }  // namespace radview::gl
