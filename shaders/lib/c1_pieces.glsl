@@ -6,9 +6,6 @@
 // The smallest of three, the first of equals (the CPU's comparisons, in the same order).
 int smallest(vec3 v) { return v.x <= v.y ? (v.x <= v.z ? 0 : 2) : (v.y <= v.z ? 1 : 2); }
 
-// One of three by index, as selects (a local array indexed at run time costs more on llvmpipe).
-vec3 pick(int i, vec3 a, vec3 b, vec3 c) { return i == 0 ? a : (i == 1 ? b : c); }
-
 #if DEGREE == 3
 // Clough-Tocher (C&W §9.2.2, fig. 9.12) as patch_nets.h packs it: the cubic P of the piece
 // where lambda_0 is the smallest, over the whole triangle, plus alpha psi_1 + beta psi_2, the
@@ -53,23 +50,26 @@ vec3 c1Value(vec4 n[NET_VEC4S], vec3 lambda) {
 // linear interpolation of the corners' values, as for Clough-Tocher above.
 vec3 quadraticFromSums(vec3 lambda, vec3 su, vec3 sv, vec3 sw) { return lambda.x * su + lambda.y * sv + lambda.z * sw; }
 
-// The rest: the fan triangle (V_k, V_k1, Z) with the smallest mu = lambda_o / zeta_o, then
-// the side of the line Z - R_k, as powell_sabin.cpp's evaluate chooses, and its control values
-// as buildPowellSabin's with f = D = 0: at (V_k1 + R_k)/2 (1 - t_k) e_k / 2, at (V_i + Z)/2
-// zeta_i+2 e_i+2 / 2 (Z - V_i along the edge into V_i), the means between them, 0 elsewhere.
+// The rest: in the fan triangle (V_k, V_k1, Z) with the smallest mu = lambda_o / zeta_o, as
+// powell_sabin.cpp's evaluate chooses, whose barycentric coordinates are (a_k, a_k1, mu) with
+// a = lambda - mu zeta (a_o = 0), the two pieces on either side of the line Z - R_k,
+// R_k = (1 - t_k) V_k + t_k V_k1. Their control values, as buildPowellSabin's with f = D = 0:
+// at (V_k1 + R_k)/2 (1 - t_k) e_k / 2, at (V_i + Z)/2 zeta_i+2 e_i+2 / 2 (Z - V_i along the
+// edge into V_i), the means between them, 0 elsewhere. Summed in Bernstein form they reduce to
+// one weight per e_i: mu^2 zeta_i zeta_i+1 / 2 from Z, and
+//   e_o: mu zeta_o a_k;   e_k: mu zeta_k a_k1 + g^2 / (2 t (1 - t)), g = (1 - t) a_k1, t = t_k,
+// on the side of V_k; beyond the line, the C1 join subtracts (g - a_k t)^2 / (2 t (1 - t)),
+// which leaves min(g, a_k t) max(g, 2 g - a_k t) / (2 t (1 - t)) on both sides. Written for
+// every i at once these terms vanish for the corners they do not belong to (a_o = 0), so no
+// piece is chosen: mu is the smallest quotient, whichever fan it names.
 vec3 powellSabinRest(vec3 lambda, vec3 e0, vec3 e1, vec3 e2, vec3 zeta, vec3 split) {
-  vec3 z0 = (0.5 * zeta.z) * e2, z1 = (0.5 * zeta.x) * e0, z2 = (0.5 * zeta.y) * e1;
-  int o = smallest(lambda / zeta), k = (o + 1) % 3, k1 = (k + 1) % 3;
-  float t = split[k];
-  vec3 farR = (0.5 * (1.0 - t)) * pick(k, e0, e1, e2);
-  vec3 zk = pick(k, z0, z1, z2), zk1 = pick(k1, z0, z1, z2);
-  float mu = lambda[o] / zeta[o];
-  float a = lambda[k] - mu * zeta[k], b = lambda[k1] - mu * zeta[k1];
-  bool nearSide = b * (1.0 - t) <= a * t;
-  vec3 c[6] = vec3[](vec3(0.0), nearSide ? vec3(0.0) : farR, nearSide ? zk : zk1, t * farR, (1.0 - t) * zk + t * zk1,
-                     zeta.x * z0 + zeta.y * z1 + zeta.z * z2);
-  vec3 sigma = nearSide ? vec3(a - b * (1.0 - t) / t, b / t, mu) : vec3(b - a * t / (1.0 - t), a / (1.0 - t), mu);
-  return quadraticBernstein(c, sigma);
+  vec3 quotients = lambda / zeta;
+  float mu = min(min(quotients.x, quotients.y), quotients.z);
+  vec3 a = lambda - mu * zeta, aNext = a.yzx;
+  vec3 g = (1.0 - split) * aNext, at = a * split;
+  vec3 w = mu * zeta * aNext + 0.5 * min(g, at) * max(g, 2.0 * g - at) / (split * (1.0 - split)) +
+           (0.5 * mu * mu) * (zeta * zeta.yzx);
+  return w.x * e0 + w.y * e1 + w.z * e2;
 }
 
 // The value from the packed values of the whole triangle (the deferred pass): corner k's 12
