@@ -14,7 +14,7 @@ struct BenchOptions {
   std::string camera;  // as render --camera
   std::string size = "512x512";
   double exposure = 0.0;
-  int spp = 256;                                    // the reference's samples per pixel
+  int spp = 64;                                     // the reference's samples per pixel
   std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
   int frames = 9;                                   // timed frames per row (median)
   double rowSeconds = 3.0;                          // a row's timing stops after this, once 3 frames are in

@@ -90,7 +90,8 @@ inline constexpr int kMaxImageSide = 16384;
 
 // Final-gather samples per pixel (render --spp, bench --spp, the viewer's stopping point). The
 // gather's memory does not grow with them; its time does, linearly: 65536 spp at 512x512 is 17 G
-// rays, hours on a CPU. Its error falls as 1/sqrt(spp), so more would not be seen on 8 bits.
+// rays, hours on a CPU. Its error falls at least as 1/sqrt(spp) (faster where the integrand is
+// smooth: the passes are stratified, gather_sequence.h), so more would not be seen on 8 bits.
 inline constexpr int kMaxGatherSpp = 65536;
 // Final-gather shadow rays per pixel per pass (--emitter-samples): time, linearly.
 inline constexpr int kMaxEmitterSamples = 1024;

@@ -12,6 +12,8 @@ namespace radview {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// A sample's coordinates of the GatherSequence (final_gather.h).
+constexpr int kIndirectDimension = 0, kPixelDimension = 2, kEmitterDimension = 4;
 
 GatherSettings checked(const GatherSettings& settings) {
   if (settings.width < 1 || settings.height < 1)
@@ -40,6 +42,7 @@ FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settin
       caster_(std::make_unique<RayCaster>(elementScene(mesh))),
       emitters_(mesh),
       cameraRays_(settings.camera, settings.width, settings.height),
+      sequence_(kEmitterDimension + 3 * settings_.emitterSamples),
       sum_(size_t(settings.width) * size_t(settings.height) * 4, 0.0),
       pass_(size_t(settings.width) * size_t(settings.height)) {
   normals_.reserve(mesh.elements.size());
@@ -47,12 +50,12 @@ FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settin
 }
 
 // C&W eq. 9.9's integral over the emitters' own radiosity E: sampled by area on them.
-Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const {
+Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const {
   if (emitters_.empty()) return Rgb(0.0);
   Rgb sum(0.0);
   for (int k = 0; k < settings_.emitterSamples; ++k) {
-    const double uPick = stream.uniform(), u1 = stream.uniform(), u2 = stream.uniform();
-    const EmitterSample s = emitters_.sample(uPick, u1, u2);
+    const int first = kEmitterDimension + 3 * k;
+    const EmitterSample s = emitters_.sample(draw(first), draw(first + 1), draw(first + 2));
     const Vec3 d = s.position - x;
     const double r2 = glm::dot(d, d);
     if (!(r2 > 0.0)) continue;
@@ -69,10 +72,10 @@ Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, SampleStream& stream,
 
 // The rest of eq. 9.9's integral, B^ - E over the surfaces, by one cosine-weighted direction:
 // with pdf cos(theta) / pi, G dA' = cos(theta) / pi dw cancels to B^(x') - E(x').
-Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const {
-  const double u1 = stream.uniform(), u2 = stream.uniform();
+Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const {
   ++rays;
-  const std::optional<RayHit> hit = caster_->closestHit({x, cosineWeightedDirection(n, u1, u2), n});
+  const Vec3 direction = cosineWeightedDirection(n, draw(kIndirectDimension), draw(kIndirectDimension + 1));
+  const std::optional<RayHit> hit = caster_->closestHit({x, direction, n});
   if (!hit || !hit->front) return Rgb(0.0);
   const uint32_t element = uint32_t(hit->polygon);
   const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
@@ -81,11 +84,11 @@ Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, SampleStream& strea
 
 PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
   const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
-  SampleStream stream = SampleStream::forKey(settings_.seed, pixel, uint64_t(pass));
+  const SampleDraw draw{sequence_, settings_.seed, pixel, uint32_t(pass)};
   PixelSample result;
-  const double jitterX = stream.uniform(), jitterY = stream.uniform();
   ++result.rays;
-  const std::optional<RayHit> seen = caster_->closestHit(cameraRays_.through(x + jitterX, y + jitterY));
+  const std::optional<RayHit> seen =
+      caster_->closestHit(cameraRays_.through(x + draw(kPixelDimension), y + draw(kPixelDimension + 1)));
   if (!seen) return result;
   result.covered = true;
   const uint32_t element = uint32_t(seen->polygon);
@@ -96,10 +99,7 @@ PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
   // C&W eq. 9.9.
   const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
   const Vec3& n = normals_[element];
-  // Both draw from one stream, so their order is fixed here: the operands of + are evaluated in
-  // an unspecified order (gcc and clang differ), which made images depend on the compiler.
-  const Rgb indirect = indirectLight(seen->position, n, stream, result.rays);
-  const Rgb gathered = directLight(seen->position, n, stream, result.rays) + indirect;
+  const Rgb gathered = directLight(seen->position, n, draw, result.rays) + indirectLight(seen->position, n, draw, result.rays);
   result.B = material.E + material.rho * gathered;
   return result;
 }

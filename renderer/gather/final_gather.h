@@ -29,15 +29,18 @@
 //    integrates B^ as it is, and overshoot comes in pairs (below zero beside a peak above the
 //    data), so clamping only the negative side would add energy and bias the reference.
 //
-// Random numbers come from SampleStream::forKey(seed, pixel, pass): each pixel's samples do
-// not depend on which thread takes them, so the image is bit-identical for any thread count.
+// The numbers a sample draws are pass `pass`'s point of a GatherSequence, shifted by the
+// pixel's own word per coordinate: coordinates 0-1 the indirect direction (the sequence's best
+// stratified pair: the integrand that varies most), 2-3 the point in the pixel, then three per
+// emitter sample. Each pixel's samples do not depend on which thread takes them, so the image
+// is bit-identical for any thread count.
 #include "core/camera.h"
 #include "core/image.h"
 #include "gather/camera_rays.h"
 #include "gather/emitter_sampler.h"
+#include "gather/gather_sequence.h"
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
-#include "solve/patch_sampler.h"
 #include "solve/ray_caster.h"
 
 #include <atomic>
@@ -89,8 +92,15 @@ class FinalGather {
   PixelSample samplePixel(int x, int y, int pass) const;
 
  private:
-  Rgb directLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const;
-  Rgb indirectLight(const Vec3& x, const Vec3& n, SampleStream& stream, uint32_t& rays) const;
+  // The numbers of one pixel's sample of one pass.
+  struct SampleDraw {
+    const GatherSequence& sequence;
+    uint64_t seed, pixel;
+    uint32_t pass;
+    double operator()(int dimension) const { return sequence.uniform(seed, pixel, pass, dimension); }
+  };
+  Rgb directLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const;
+  Rgb indirectLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const;
 
   const RadiosityMesh& mesh_;
   GatherSettings settings_;
@@ -99,6 +109,7 @@ class FinalGather {
   std::vector<Vec3> normals_;          // unit normal of each element
   EmitterSampler emitters_;
   CameraRays cameraRays_;
+  GatherSequence sequence_;
   std::vector<double> sum_;  // per pixel: sum of B over covered samples (RGB), covered count
   std::vector<PixelSample> pass_;
   int passes_ = 0;

@@ -74,8 +74,9 @@ TEST(MeshColoursCorpus, EveryFileOpensOrIsRefusedWithItsReason) {
       const std::string message = e.what();
       EXPECT_EQ(message.rfind(entry.path().string() + ": ", 0), 0u) << message;
       EXPECT_FALSE(expected->second.refusal.empty()) << name << " refused: " << message;
-      if (!expected->second.refusal.empty())
+      if (!expected->second.refusal.empty()) {
         EXPECT_NE(message.find(expected->second.refusal), std::string::npos) << name << ": " << message;
+      }
     }
   }
   EXPECT_EQ(seen, kExpected.size());

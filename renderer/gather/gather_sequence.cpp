@@ -1,0 +1,41 @@
+#include "gather/gather_sequence.h"
+
+#include "core/error.h"
+#include "solve/patch_sampler.h"
+
+#include <boost/random/sobol.hpp>
+
+#include <string>
+
+namespace radview {
+
+GatherSequence::GatherSequence(int dimensions) : dimensions_(dimensions) {
+  using Engine = boost::random::sobol_engine<uint32_t, 32>;
+  constexpr unsigned kMaxDimensions = boost::random::default_sobol_table::max_dimension;
+  if (dimensions < 1 || unsigned(dimensions) > kMaxDimensions)
+    throw Error("final gather: " + std::to_string(dimensions) + " sample dimensions: the Sobol sequence has 1.." +
+                std::to_string(kMaxDimensions));
+  // Boost's engine steps through the points in Gray-code order and skips point 0: its n-th
+  // point (from 0) is the one at index gray(n + 1). Index 2^b is gray(2^(b+1) - 1), the point
+  // after 2^(b+1) - 2 others, and every other index is the XOR of those its bits name.
+  Engine engine(static_cast<std::size_t>(dimensions));
+  direction_.resize(size_t(kIndexBits) * size_t(dimensions));
+  for (int bit = 0; bit < kIndexBits; ++bit) {
+    engine.seed();
+    engine.discard(uint64_t(dimensions) * ((uint64_t(2) << bit) - 2));
+    for (int d = 0; d < dimensions; ++d) direction_[size_t(bit) * size_t(dimensions) + size_t(d)] = engine();
+  }
+}
+
+double GatherSequence::uniform(uint64_t seed, uint64_t pixel, uint32_t pass, int dimension) const {
+  uint32_t bits = 0;
+  const uint32_t index = pass & ((1u << kIndexBits) - 1u);
+  for (int bit = 0; bit < kIndexBits; ++bit)
+    if (index >> bit & 1u) bits ^= direction_[size_t(bit) * size_t(dimensions_) + size_t(dimension)];
+  // The shift: a pixel's own word per coordinate (and per run of 2^16 passes).
+  const uint64_t block = pass >> kIndexBits;
+  bits ^= uint32_t(SampleStream::forKey(seed, pixel, uint64_t(dimension) | block << 32).next() >> 32);
+  return double(bits) * 0x1.0p-32;
+}
+
+}  // namespace radview

@@ -1,0 +1,33 @@
+#pragma once
+// The numbers the final gather's estimator draws (eq. 9.9, final_gather.h), stratified across
+// passes: pass i of every pixel takes point i of one Sobol sequence (Boost.Random's, Joe and
+// Kuo's direction numbers), and each pixel XORs every coordinate with its own random word (a
+// random digital shift). The shift keeps the sequence's nets: the first 2^k passes of the first
+// two coordinates put one point in each of 2^k strata of any shape 2^-a x 2^-b, a + b = k,
+// wherever the pixel's shift moves them; every point is still uniform on [0, 1)^d, so the
+// estimate stays unbiased, and neighbouring pixels' errors are unrelated. For an integrand
+// that is smooth apart from a few edges (a shadow, a silhouette) the error then falls faster
+// than the 1/sqrt(spp) of independent samples.
+#include <cstdint>
+#include <vector>
+
+namespace radview {
+
+class GatherSequence {
+ public:
+  // Throws Error when `dimensions` is outside 1..the direction numbers Boost holds (3667).
+  explicit GatherSequence(int dimensions);
+
+  int dimensions() const { return dimensions_; }
+
+  // Coordinate `dimension` of pass `pass`'s point as pixel `pixel` of gather `seed` takes it,
+  // in [0, 1). Passes 2^16 apart repeat the point under another shift.
+  double uniform(uint64_t seed, uint64_t pixel, uint32_t pass, int dimension) const;
+
+ private:
+  static constexpr int kIndexBits = 16;
+  int dimensions_;
+  std::vector<uint32_t> direction_;  // [bit * dimensions + dimension]: the point at index 2^bit
+};
+
+}  // namespace radview

@@ -1,0 +1,96 @@
+#include "gather/gather_sequence.h"
+
+#include "core/error.h"
+
+#include <gtest/gtest.h>
+
+#include <boost/random/sobol.hpp>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace radview {
+namespace {
+
+// The first 2^k passes of coordinates (d0, d1) of one pixel: for every a + b = k, one point in
+// each of the 2^a x 2^b strata of the unit square (a (0, k, 2)-net), as the unshifted Sobol
+// points are; the pixel's shift must keep that.
+bool isNet(const GatherSequence& sequence, uint64_t pixel, int d0, int d1, int k) {
+  const uint32_t n = 1u << k;
+  for (int a = 0; a <= k; ++a) {
+    std::set<std::pair<int, int>> strata;
+    for (uint32_t pass = 0; pass < n; ++pass)
+      strata.insert({int(std::floor(sequence.uniform(3, pixel, pass, d0) * (1 << a))),
+                     int(std::floor(sequence.uniform(3, pixel, pass, d1) * (1 << (k - a))))});
+    if (strata.size() != n) return false;
+  }
+  return true;
+}
+
+TEST(GatherSequenceTest, EachPixelsFirstPassesOfTheFirstPairAreNets) {
+  const GatherSequence sequence(7);
+  for (uint64_t pixel : {0u, 1u, 12345u})
+    for (int k : {2, 4, 6, 8}) EXPECT_TRUE(isNet(sequence, pixel, 0, 1, k)) << pixel << " " << k;
+}
+
+TEST(GatherSequenceTest, EveryCoordinateAloneIsStratified) {
+  const GatherSequence sequence(7);
+  for (int d = 0; d < 7; ++d) {
+    std::set<int> strata;
+    for (uint32_t pass = 0; pass < 64; ++pass) {
+      const double u = sequence.uniform(3, 42, pass, d);
+      ASSERT_GE(u, 0.0);
+      ASSERT_LT(u, 1.0);
+      strata.insert(int(u * 64));
+    }
+    EXPECT_EQ(strata.size(), 64u) << d;
+  }
+}
+
+TEST(GatherSequenceTest, PixelsDifferByOneShiftPerCoordinate) {
+  // The XOR of two pixels' points is the same at every pass: each pixel's points are the
+  // sequence's, digitally shifted, and the shifts differ between pixels and seeds.
+  const GatherSequence sequence(5);
+  auto word = [&](uint64_t seed, uint64_t pixel, uint32_t pass, int d) {
+    return uint32_t(std::ldexp(sequence.uniform(seed, pixel, pass, d), 32));
+  };
+  for (int d = 0; d < 5; ++d) {
+    const uint32_t shift = word(1, 10, 0, d) ^ word(1, 11, 0, d);
+    EXPECT_NE(shift, 0u);
+    for (uint32_t pass = 1; pass < 100; ++pass) EXPECT_EQ(word(1, 10, pass, d) ^ word(1, 11, pass, d), shift);
+    EXPECT_NE(word(1, 10, 0, d), word(2, 10, 0, d));
+  }
+}
+
+TEST(GatherSequenceTest, PointsAreBoostsSobolPoints) {
+  // Up to one shift, pass i is Boost's point i in its own (Gray-code) order, whose first point
+  // is the sequence's second: the set of the first 2^k points is the same either way.
+  constexpr int kDims = 4;
+  const GatherSequence sequence(kDims);
+  boost::random::sobol_engine<uint32_t, 32> engine(kDims);
+  std::set<std::vector<uint32_t>> boost, ours;
+  boost.insert(std::vector<uint32_t>(kDims, 0u));
+  for (int i = 0; i < 255; ++i) {
+    std::vector<uint32_t> point(kDims);
+    for (uint32_t& x : point) x = engine();
+    boost.insert(point);
+  }
+  std::vector<uint32_t> shift(kDims);
+  for (int d = 0; d < kDims; ++d) shift[size_t(d)] = uint32_t(std::ldexp(sequence.uniform(5, 9, 0, d), 32));
+  for (uint32_t pass = 0; pass < 256; ++pass) {
+    std::vector<uint32_t> point(kDims);
+    for (int d = 0; d < kDims; ++d)
+      point[size_t(d)] = uint32_t(std::ldexp(sequence.uniform(5, 9, pass, d), 32)) ^ shift[size_t(d)];
+    ours.insert(point);
+  }
+  EXPECT_EQ(ours, boost);
+}
+
+TEST(GatherSequenceTest, RefusesDimensionsBeyondTheTable) {
+  EXPECT_THROW(GatherSequence(0), Error);
+  EXPECT_THROW(GatherSequence(100000), Error);
+}
+
+}  // namespace
+}  // namespace radview
