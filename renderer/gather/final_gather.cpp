@@ -50,12 +50,12 @@ FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settin
 }
 
 // C&W eq. 9.9's integral over the emitters' own radiosity E: sampled by area on them.
-Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const {
+Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const {
   if (emitters_.empty()) return Rgb(0.0);
   Rgb sum(0.0);
   for (int k = 0; k < settings_.emitterSamples; ++k) {
     const int first = kEmitterDimension + 3 * k;
-    const EmitterSample s = emitters_.sample(draw(first), draw(first + 1), draw(first + 2));
+    const EmitterSample s = emitters_.sample(u(first), u(first + 1), u(first + 2));
     const Vec3 d = s.position - x;
     const double r2 = glm::dot(d, d);
     if (!(r2 > 0.0)) continue;
@@ -72,9 +72,10 @@ Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, const SampleDraw& dra
 
 // The rest of eq. 9.9's integral, B^ - E over the surfaces, by one cosine-weighted direction:
 // with pdf cos(theta) / pi, G dA' = cos(theta) / pi dw cancels to B^(x') - E(x').
-Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const {
+Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u,
+                                uint32_t& rays) const {
   ++rays;
-  const Vec3 direction = cosineWeightedDirection(n, draw(kIndirectDimension), draw(kIndirectDimension + 1));
+  const Vec3 direction = cosineWeightedDirection(n, u(kIndirectDimension), u(kIndirectDimension + 1));
   const std::optional<RayHit> hit = caster_->closestHit({x, direction, n});
   if (!hit || !hit->front) return Rgb(0.0);
   const uint32_t element = uint32_t(hit->polygon);
@@ -83,12 +84,16 @@ Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const SampleDraw& d
 }
 
 PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
+  return sample(x, y, pass, sequence_.point(uint32_t(pass)));
+}
+
+PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32_t>& point) const {
   const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
-  const SampleDraw draw{sequence_, settings_.seed, pixel, uint32_t(pass)};
+  const GatherSequence::PixelPoint u(point, settings_.seed, pixel, uint32_t(pass));
   PixelSample result;
   ++result.rays;
   const std::optional<RayHit> seen =
-      caster_->closestHit(cameraRays_.through(x + draw(kPixelDimension), y + draw(kPixelDimension + 1)));
+      caster_->closestHit(cameraRays_.through(x + u(kPixelDimension), y + u(kPixelDimension + 1)));
   if (!seen) return result;
   result.covered = true;
   const uint32_t element = uint32_t(seen->polygon);
@@ -99,7 +104,7 @@ PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
   // C&W eq. 9.9.
   const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
   const Vec3& n = normals_[element];
-  const Rgb gathered = directLight(seen->position, n, draw, result.rays) + indirectLight(seen->position, n, draw, result.rays);
+  const Rgb gathered = directLight(seen->position, n, u, result.rays) + indirectLight(seen->position, n, u, result.rays);
   result.B = material.E + material.rho * gathered;
   return result;
 }
@@ -108,11 +113,12 @@ int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
   auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
   const int width = settings_.width;
   for (int p = 0; p < passes; ++p) {
+    const std::vector<uint32_t> point = sequence_.point(uint32_t(passes_));
     parallelFor(
         size_t(settings_.height),
         [&](size_t y) {
           if (cancelled()) return;
-          for (int x = 0; x < width; ++x) pass_[y * size_t(width) + size_t(x)] = samplePixel(x, int(y), passes_);
+          for (int x = 0; x < width; ++x) pass_[y * size_t(width) + size_t(x)] = sample(x, int(y), passes_, point);
         },
         1);
     if (cancelled()) return p;

@@ -92,15 +92,10 @@ class FinalGather {
   PixelSample samplePixel(int x, int y, int pass) const;
 
  private:
-  // The numbers of one pixel's sample of one pass.
-  struct SampleDraw {
-    const GatherSequence& sequence;
-    uint64_t seed, pixel;
-    uint32_t pass;
-    double operator()(int dimension) const { return sequence.uniform(seed, pixel, pass, dimension); }
-  };
-  Rgb directLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const;
-  Rgb indirectLight(const Vec3& x, const Vec3& n, const SampleDraw& draw, uint32_t& rays) const;
+  // samplePixel with the pass's point formed (GatherSequence::point), as addPasses forms it once.
+  PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const;
+  Rgb directLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
+  Rgb indirectLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
 
   const RadiosityMesh& mesh_;
   GatherSettings settings_;

@@ -1,7 +1,6 @@
 #include "gather/gather_sequence.h"
 
 #include "core/error.h"
-#include "solve/patch_sampler.h"
 
 #include <boost/random/sobol.hpp>
 
@@ -27,15 +26,17 @@ GatherSequence::GatherSequence(int dimensions) : dimensions_(dimensions) {
   }
 }
 
-double GatherSequence::uniform(uint64_t seed, uint64_t pixel, uint32_t pass, int dimension) const {
-  uint32_t bits = 0;
+std::vector<uint32_t> GatherSequence::point(uint32_t pass) const {
+  std::vector<uint32_t> words(size_t(dimensions_), 0u);
   const uint32_t index = pass & ((1u << kIndexBits) - 1u);
   for (int bit = 0; bit < kIndexBits; ++bit)
-    if (index >> bit & 1u) bits ^= direction_[size_t(bit) * size_t(dimensions_) + size_t(dimension)];
-  // The shift: a pixel's own word per coordinate (and per run of 2^16 passes).
-  const uint64_t block = pass >> kIndexBits;
-  bits ^= uint32_t(SampleStream::forKey(seed, pixel, uint64_t(dimension) | block << 32).next() >> 32);
-  return double(bits) * 0x1.0p-32;
+    if (index >> bit & 1u)
+      for (size_t d = 0; d < words.size(); ++d) words[d] ^= direction_[size_t(bit) * words.size() + d];
+  return words;
 }
+
+GatherSequence::PixelPoint::PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel,
+                                       uint32_t pass)
+    : words_(point.data()), shifts_(SampleStream::forKey(seed, pixel, uint64_t(pass >> kIndexBits))) {}
 
 }  // namespace radview

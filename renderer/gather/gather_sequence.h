@@ -8,6 +8,8 @@
 // estimate stays unbiased, and neighbouring pixels' errors are unrelated. For an integrand
 // that is smooth apart from a few edges (a shadow, a silhouette) the error then falls faster
 // than the 1/sqrt(spp) of independent samples.
+#include "solve/patch_sampler.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -20,9 +22,23 @@ class GatherSequence {
 
   int dimensions() const { return dimensions_; }
 
-  // Coordinate `dimension` of pass `pass`'s point as pixel `pixel` of gather `seed` takes it,
-  // in [0, 1). Passes 2^16 apart repeat the point under another shift.
-  double uniform(uint64_t seed, uint64_t pixel, uint32_t pass, int dimension) const;
+  // Pass `pass`'s point before any shift, coordinate d as the word d / 2^32: the same for every
+  // pixel, so a pass forms it once. Passes 2^16 apart take the same point (under other shifts).
+  std::vector<uint32_t> point(uint32_t pass) const;
+
+  // One pixel's coordinates of a pass's point, for gather `seed`.
+  class PixelPoint {
+   public:
+    // `point` (GatherSequence::point(pass)) must outlive this.
+    PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel, uint32_t pass);
+    double operator()(int dimension) const {  // in [0, 1)
+      return double(words_[dimension] ^ uint32_t(shifts_.at(uint64_t(dimension)) >> 32)) * 0x1.0p-32;
+    }
+
+   private:
+    const uint32_t* words_;
+    SampleStream shifts_;  // word d of the pixel's shift is the high half of its number d
+  };
 
  private:
   static constexpr int kIndexBits = 16;

@@ -8,12 +8,21 @@
 
 namespace radview {
 
-uint64_t SampleStream::next() {
-  uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
+namespace {
+
+constexpr uint64_t kStep = 0x9E3779B97F4A7C15ull;
+
+uint64_t mixed(uint64_t z) {
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
   z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
   return z ^ (z >> 31);
 }
+
+}  // namespace
+
+uint64_t SampleStream::next() { return mixed(state_ += kStep); }
+
+uint64_t SampleStream::at(uint64_t i) const { return mixed(state_ + (i + 1) * kStep); }
 
 SampleStream SampleStream::forKey(uint64_t a, uint64_t b, uint64_t c) {
   // Each key passes through the mixer before the next is added, so (a, b, c) and permutations

@@ -20,6 +20,8 @@ class SampleStream {
   // A well-mixed seed for the stream of `a`, `b`, `c` (e.g. seed, shot, node).
   static SampleStream forKey(uint64_t a, uint64_t b, uint64_t c);
   uint64_t next();
+  // What next() returns after i more calls, without stepping: the state is a counter.
+  uint64_t at(uint64_t i) const;
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
 
  private:
