@@ -1,14 +1,15 @@
 // The interpolants at scale: the Cornell box meshed finer and finer (10^4 to 10^6 elements),
 // rendered headless through EGL at 1920x1080 from the scene's camera.
-// Frame time: methods are interleaved frame by frame, round after round, each round starting
-// one method later, so that a shared machine's slow spells fall on all of them alike; each
+// Frame time: methods are interleaved frame by frame with Gouraud between each two, round
+// after round (G m1 G m2 ... G, each round starting one method later), so that a shared
+// machine's slow spells fall on every method and on the Gouraud frames beside it alike; each
 // method's median is reported with its interquartile range, and its ratio to Gouraud as the
-// median over rounds of the two's ratio in the same round. Seconds to the first frame (pieces
-// built, uploaded, drawn, finished) are measured once per method.
+// median over rounds of its time over the mean of the two Gouraud frames beside it. Seconds to
+// the first frame (pieces built, uploaded, drawn, finished) are measured once per method.
 // Memory and wall time: `radview render` of the same mesh, as a user runs it (meshing, direct
 // light, set-up, one frame, PNG), once per method per round, interleaved the same way: its
 // peak resident memory (as /usr/bin/time -f %M reports it; on llvmpipe the GPU's buffers are
-// part of it) and its wall time, each with its median ratio to Gouraud's in the same round.
+// part of it) and its wall time, each with its median ratio to the Gouraud runs beside it.
 // Every ratio comes with its range over the rounds, how far one round can be trusted.
 //   build/radview_scale_bench [--element-size S]... [--rounds N] [--render-rounds N] [--size WxH]
 //                             [--methods gouraud,clough-tocher]
@@ -24,6 +25,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -54,11 +56,43 @@ double quantile(std::vector<double> v, double q) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v.back();
 }
 
-// A method's time over Gouraud's in the same round, over rounds: a slow spell that lasts a
-// round slows both sides of each ratio alike. "median (lowest-highest)".
-std::string ratioOverRounds(const std::vector<double>& method, const std::vector<double>& gouraud) {
-  std::vector<double> ratios(method.size());
-  for (size_t r = 0; r < method.size(); ++r) ratios[r] = method[r] / gouraud[r];
+// What one method measured, sample by sample, and each sample over the mean of the Gouraud
+// samples taken just before and just after it.
+struct Series {
+  std::vector<double> samples, ratios;
+};
+
+// Runs measure(i) -> std::array<double, N> (N quantities of method i, Gouraud being 0) in
+// rounds of G m G m ... G, each round starting one method later so that no method always
+// follows the same one (the first draw after another renderer's pays for its caches going
+// cold). A slow spell longer than two samples slows both sides of a ratio alike; the methods'
+// own order in a round is no longer part of it. Returns per method its N series.
+template <size_t N, class Measure>
+std::vector<std::array<Series, N>> interleaveWithGouraud(size_t methods, int rounds, Measure measure) {
+  std::vector<std::array<Series, N>> series(methods);
+  auto keep = [&](size_t method, const std::array<double, N>& values) {
+    for (size_t q = 0; q < N; ++q) series[method][q].samples.push_back(values[q]);
+  };
+  for (int round = 0; round < rounds; ++round) {
+    std::array<double, N> before = measure(0);
+    keep(0, before);
+    for (size_t step = 0; step + 1 < methods; ++step) {
+      const size_t i = 1 + (step + size_t(round)) % (methods - 1);
+      const std::array<double, N> value = measure(i);
+      const std::array<double, N> after = measure(0);
+      keep(i, value);
+      keep(0, after);
+      for (size_t q = 0; q < N; ++q) series[i][q].ratios.push_back(2.0 * value[q] / (before[q] + after[q]));
+      before = after;
+    }
+  }
+  for (size_t q = 0; q < N; ++q) series[0][q].ratios.assign(size_t(rounds), 1.0);
+  return series;
+}
+
+// A method's ratios to the Gouraud samples beside it, over rounds: "median (lowest-highest)".
+std::string ratioOverRounds(const Series& series) {
+  const std::vector<double>& ratios = series.ratios;
   char text[64];
   std::snprintf(text, sizeof text, "%.2f (%.2f-%.2f)", quantile(ratios, 0.5), quantile(ratios, 0.0),
                 quantile(ratios, 1.0));
@@ -150,45 +184,39 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
     glFinish();
     firstFrame.push_back(secondsSince(start));
   }
-  std::vector<std::vector<double>> ms(variants.size());
-  // Each round starts one method later than the last, so that no method always follows the
-  // same one (the first draw after another renderer's pays for its caches going cold).
-  for (int round = 0; round < rounds; ++round)
-    for (size_t step = 0; step < variants.size(); ++step) {
-      const size_t i = (step + size_t(round)) % variants.size();
-      RenderSettings settings;
-      settings.method = variants[i].method;
-      settings.tessellation = variants[i].tessellation;
-      const auto start = Clock::now();
-      renderers[i]->render(camera, settings, width, height);
-      glFinish();
-      ms[i].push_back(1e3 * secondsSince(start));
-    }
+  const auto frames = interleaveWithGouraud<1>(variants.size(), rounds, [&](size_t i) {
+    RenderSettings settings;
+    settings.method = variants[i].method;
+    settings.tessellation = variants[i].tessellation;
+    const auto start = Clock::now();
+    renderers[i]->render(camera, settings, width, height);
+    glFinish();
+    return std::array<double, 1>{1e3 * secondsSince(start)};
+  });
   std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n", mesh.elements.size(),
               elementSize, meshSeconds, width, height, rounds);
   std::printf(
       "| method | median ms | IQR ms | / Gouraud (range over rounds) | first frame s |\n"
       "|---|---|---|---|---|\n");
-  for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.1f | %.1f-%.1f | %s | %.2f |\n", variants[i].name, quantile(ms[i], 0.5),
-                quantile(ms[i], 0.25), quantile(ms[i], 0.75), ratioOverRounds(ms[i], ms[0]).c_str(), firstFrame[i]);
+  for (size_t i = 0; i < variants.size(); ++i) {
+    const Series& ms = frames[i][0];
+    std::printf("| %s | %.1f | %.1f-%.1f | %s | %.2f |\n", variants[i].name, quantile(ms.samples, 0.5),
+                quantile(ms.samples, 0.25), quantile(ms.samples, 0.75), ratioOverRounds(ms).c_str(), firstFrame[i]);
+  }
   std::fflush(stdout);
   if (renderRounds == 0) return;
   renderers.clear();
-  std::vector<std::vector<double>> peakMb(variants.size()), seconds(variants.size());
-  for (int round = 0; round < renderRounds; ++round)
-    for (size_t step = 0; step < variants.size(); ++step) {
-      const size_t i = (step + size_t(round)) % variants.size();
-      const RenderRun run = renderRun(elementSize, variants[i].name, width, height);
-      peakMb[i].push_back(run.peakMb);
-      seconds[i].push_back(run.seconds);
-    }
+  const auto runs = interleaveWithGouraud<2>(variants.size(), renderRounds, [&](size_t i) {
+    const RenderRun run = renderRun(elementSize, variants[i].name, width, height);
+    return std::array<double, 2>{run.peakMb, run.seconds};
+  });
   std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud (range) | wall s | / Gouraud (range) |\n|---|---|---|---|---|\n",
               renderRounds);
-  for (size_t i = 0; i < variants.size(); ++i)
-    std::printf("| %s | %.0f | %s | %.2f | %s |\n", variants[i].name, quantile(peakMb[i], 0.5),
-                ratioOverRounds(peakMb[i], peakMb[0]).c_str(), quantile(seconds[i], 0.5),
-                ratioOverRounds(seconds[i], seconds[0]).c_str());
+  for (size_t i = 0; i < variants.size(); ++i) {
+    const Series &peakMb = runs[i][0], &seconds = runs[i][1];
+    std::printf("| %s | %.0f | %s | %.2f | %s |\n", variants[i].name, quantile(peakMb.samples, 0.5),
+                ratioOverRounds(peakMb).c_str(), quantile(seconds.samples, 0.5), ratioOverRounds(seconds).c_str());
+  }
   std::fflush(stdout);
 }
 
@@ -198,7 +226,7 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
 int main(int argc, char** argv) {
   using namespace radview;
   std::vector<double> sizes;
-  int rounds = 15, renderRounds = 5, width = 1920, height = 1080;
+  int rounds = 40, renderRounds = 5, width = 1920, height = 1080;
   std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--element-size"))
