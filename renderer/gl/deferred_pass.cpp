@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -52,32 +51,33 @@ DeferredPass::~DeferredPass() {
 }
 
 void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
+  const std::string pieces = std::string("per-pixel ") + (degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": ";
   const size_t vec4s = kNetVec4s;
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   if (triangles >= kMaxTriangles)
-    throw Error("per-pixel " + std::string(degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": " +
-                std::to_string(triangles) + " triangles, more than the " + std::to_string(kMaxTriangles - 1) +
+    throw Error(pieces + std::to_string(triangles) + " triangles, more than the " + std::to_string(kMaxTriangles - 1) +
                 " its visibility pass can number");
   if (triangles * vec4s > size_t(maxTexels))
-    throw Error("per-pixel " + std::string(degree == 3 ? "Clough-Tocher" : "C1 quadratic") + ": " +
-                std::to_string(triangles) + " triangles need " + std::to_string(triangles * vec4s) +
+    throw Error(pieces + std::to_string(triangles) + " triangles need " + std::to_string(triangles * vec4s) +
                 " texels of control values, more than this OpenGL's buffer textures hold (" +
                 std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
-  glNamedBufferData(corners_, GLsizeiptr(3 * triangles * sizeof(glm::vec3)), nullptr, GL_STATIC_DRAW);
+  const GLsizeiptr cornerBytes = GLsizeiptr(3 * triangles * sizeof(glm::vec3));
   // One triangle more: the one pass's last vertex reads up to 88 bytes past its triangle's.
-  glNamedBufferData(nets_, GLsizeiptr(vec4s * (triangles + 1) * sizeof(glm::vec4)), nullptr, GL_STATIC_DRAW);
-  constexpr size_t kBlock = 16384;
-  std::vector<glm::vec3> corners(3 * std::min(kBlock, triangles));
-  std::vector<glm::vec4> nets(vec4s * std::min(kBlock, triangles));
-  for (size_t first = 0; first < triangles; first += kBlock) {
-    const size_t count = std::min(kBlock, triangles - first);
-    fill(first, count, corners.data(), nets.data());
-    glNamedBufferSubData(corners_, GLintptr(3 * first * sizeof(glm::vec3)), GLsizeiptr(3 * count * sizeof(glm::vec3)),
-                         corners.data());
-    glNamedBufferSubData(nets_, GLintptr(vec4s * first * sizeof(glm::vec4)),
-                         GLsizeiptr(vec4s * count * sizeof(glm::vec4)), nets.data());
-  }
+  const GLsizeiptr netBytes = GLsizeiptr(vec4s * (triangles + 1) * sizeof(glm::vec4));
+  glNamedBufferData(corners_, cornerBytes, nullptr, GL_STATIC_DRAW);
+  glNamedBufferData(nets_, netBytes, nullptr, GL_STATIC_DRAW);
+  // Written where the GL keeps them: no copy on the CPU's side (on a software GL, none at all).
+  auto* corners = static_cast<glm::vec3*>(glMapNamedBufferRange(corners_, 0, cornerBytes, GL_MAP_WRITE_BIT));
+  auto* nets = static_cast<glm::vec4*>(glMapNamedBufferRange(nets_, 0, netBytes, GL_MAP_WRITE_BIT));
+  bool written = corners && nets;
+  if (written) fill(corners, nets);
+  // Unmapping fails only where the GL lost the memory meanwhile (on a display mode change).
+  if (corners && !glUnmapNamedBuffer(corners_)) written = false;
+  if (nets && !glUnmapNamedBuffer(nets_)) written = false;
+  if (!written)
+    throw Error(pieces + "the GL could not map " + std::to_string(cornerBytes + netBytes) + " bytes for " +
+                std::to_string(triangles) + " triangles' control values");
   glTextureBuffer(netsTexture_, GL_RGBA32F, nets_);
   triangles_ = triangles;
   degree_ = degree;

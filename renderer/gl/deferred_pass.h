@@ -24,11 +24,10 @@ class DeferredPass {
   DeferredPass(const DeferredPass&) = delete;
   DeferredPass& operator=(const DeferredPass&) = delete;
 
-  // fill(first, count, corners, nets) writes `count` triangles from `first` on: 3 corners and
-  // kNetVec4s vec4 each (gl/patch_nets.h).
-  using NetFill = std::function<void(size_t first, size_t count, glm::vec3* corners, glm::vec4* nets)>;
-  // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them a
-  // block at a time, each block uploaded before the next: the CPU never holds more than one.
+  // fill(corners, nets) writes every triangle: 3 corners and kNetVec4s vec4 each (gl/patch_nets.h).
+  using NetFill = std::function<void(glm::vec3* corners, glm::vec4* nets)>;
+  // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them
+  // all, once, straight into the GL's buffers (mapped): the CPU holds no copy of its own.
   // Throws Error for more than this OpenGL's buffer textures hold, or than a float counts
   // exactly (2^24 - 1, the visibility pass's triangle numbers).
   void upload(size_t triangles, int degree, const NetFill& fill);

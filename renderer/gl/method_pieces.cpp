@@ -29,11 +29,11 @@ template <typename MakePatch>
 void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t splitPoints, const MakePatch& make,
                    std::vector<glm::vec3>* split) {
   if (split) split->assign(splitPoints * triangles, glm::vec3(0.0f));
-  pass.upload(triangles, degree, [&](size_t first, size_t count, glm::vec3* corners, glm::vec4* nets) {
-    parallelFor(count, [&](size_t i) {
-      const auto patch = make(uint32_t(first + i));
-      writeNet(patch, corners + 3 * i, nets + kNetVec4s * i);
-      if (split) writeSplitLines(patch, &(*split)[splitPoints * (first + i)]);
+  pass.upload(triangles, degree, [&](glm::vec3* corners, glm::vec4* nets) {
+    parallelFor(triangles, [&](size_t t) {
+      const auto patch = make(uint32_t(t));
+      writeNet(patch, corners + 3 * t, nets + kNetVec4s * t);
+      if (split) writeSplitLines(patch, &(*split)[splitPoints * t]);
     });
   });
 }
