@@ -20,8 +20,6 @@ class GatherSequence {
   // Throws Error when `dimensions` is outside 1..the direction numbers Boost holds (3667).
   explicit GatherSequence(int dimensions);
 
-  int dimensions() const { return dimensions_; }
-
   // Pass `pass`'s point before any shift, coordinate d as the word d / 2^32: the same for every
   // pixel, so a pass forms it once. Passes 2^16 apart take the same point (under other shifts).
   std::vector<uint32_t> point(uint32_t pass) const;
