@@ -1,4 +1,5 @@
 #version 450 core
+#include "lib/eye_plane.glsl"
 // The C1 methods per pixel in one pass (renderer/gl/deferred_pass.h), for draws with fewer
 // vertices than the image has pixels.
 layout(location = 0) in vec3 position;
@@ -6,6 +7,7 @@ layout(location = 0) in vec3 position;
 uniform mat4 clipFromWorld;
 
 out vec3 vLambda;  // perspective-correct: barycentric coordinates on the surface
+out vec4 vClip;    // and the clip position of their surface point (lib/pixel_centre.glsl)
 
 #if DEGREE == 3
 // Clough-Tocher: each vertex carries its own corner's 12 floats (lib/c1_pieces.glsl) as
@@ -20,6 +22,8 @@ flat out vec3 vAlpha, vBeta;
 
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
+  vClip = gl_Position;
   int corner = gl_VertexID % 3;
   vLambda = vec3(corner == 0, corner == 1, corner == 2);
   vec3 first = corner0.xyz, last = corner2.yzw;
@@ -44,6 +48,8 @@ flat out vec3 vE0, vE1, vE2, vZeta, vSplit;
 
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
+  vClip = gl_Position;
   int corner = gl_VertexID % 3;
   vLambda = vec3(corner == 0, corner == 1, corner == 2);
   vec3 a = own0.xyz, b = vec3(own0.w, own1.xy);

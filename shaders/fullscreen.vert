@@ -1,6 +1,8 @@
 #version 450 core
-// One triangle covering the viewport; no vertex buffer needed.
+// One triangle covering the viewport; no vertex buffer needed. Inside user clip plane 0, which
+// the radiosity pass enables for the surfaces (lib/eye_plane.glsl), whatever the scene's scale.
 void main() {
   vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
   gl_Position = vec4(p * 2.0 - 1.0, 0.0, 1.0);
+  gl_ClipDistance[0] = 1.0;
 }

@@ -1,4 +1,5 @@
 #version 450 core
+#include "lib/eye_plane.glsl"
 // Radiosity mesh, triangulated: each vertex carries its node's radiosity B and the
 // element's mean value for flat shading.
 layout(location = 0) in vec3 position;
@@ -17,6 +18,7 @@ flat out vec3 vBFlat;
 
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
   vB = B;
   vBw = vec4(B * gl_Position.w, gl_Position.w);
   vBFlat = Bflat;

@@ -1,4 +1,5 @@
 #version 450 core
+#include "lib/eye_plane.glsl"
 // Overlay lines and markers with a colour per vertex (discontinuity edges, T-vertices).
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec4 color;
@@ -7,6 +8,7 @@ uniform float pointSize;
 out vec4 vColor;
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
   gl_PointSize = pointSize;
   vColor = color;
 }

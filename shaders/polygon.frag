@@ -1,4 +1,5 @@
 #version 450 core
+#include "lib/pixel_centre.glsl"
 #include "lib/polygon_corners.glsl"
 #include "lib/scanline_gouraud.glsl"
 // Scanline Gouraud (fig. 9.7), bilinear quads and 8-node serendipity quads per pixel, from the
@@ -9,9 +10,9 @@
 #define MODE_SERENDIPITY 2
 
 uniform mat4 clipFromWorld;
-uniform vec2 viewportSize;
 
 in vec3 vPosition;
+in vec4 vClip;
 in vec3 vB;
 flat in uint vElement;
 #if CORNERS_PER_VERTEX
@@ -26,6 +27,8 @@ flat in vec3 vCorner[4];
 #endif
 
 layout(location = 0) out vec4 radiosity;
+
+vec3 surfacePoint;  // this pixel centre's (lib/pixel_centre.glsl), set first in main
 
 // Scanline Gouraud at this pixel centre, on the polygon projected as the rasteriser sees it.
 // Elements with corners behind the eye, or more corners than the shader holds, fall back to
@@ -45,7 +48,7 @@ vec3 scanline(uint first, int count) {
 }
 
 // The quad's own parameters (s, t) at this pixel: Newton's method for the (s, t) whose point
-// x(s, t) is nearest this pixel's surface point, as renderer/interp/bilinear_map.cpp does.
+// x(s, t) is nearest this pixel centre's surface point, as renderer/interp/bilinear_map.cpp does.
 vec2 quadParameters(vec3 p0, vec3 p1, vec3 p2, vec3 p3) {
   // A parallelogram's map is affine: the first step lands on the answer.
   vec3 twist = p0 - p1 + p2 - p3;
@@ -53,7 +56,7 @@ vec2 quadParameters(vec3 p0, vec3 p1, vec3 p2, vec3 p3) {
   vec2 st = vec2(0.5);
   for (int iteration = 0; iteration < 8; ++iteration) {
     vec3 x = mix(mix(p0, p1, st.x), mix(p3, p2, st.x), st.y);
-    vec3 r = x - vPosition;
+    vec3 r = x - surfacePoint;
     vec3 a = mix(p1 - p0, p2 - p3, st.y), b = mix(p3 - p0, p2 - p1, st.x);
     float aa = dot(a, a), ab = dot(a, b), bb = dot(b, b);
     float det = aa * bb - ab * ab;
@@ -129,6 +132,9 @@ bool smallPolygonValue(out vec3 B) {
 }
 
 void main() {
+#if MODE != MODE_SCANLINE
+  surfacePoint = AT_PIXEL_CENTRE(vPosition, pixelCentreStep(vClip));
+#endif
   vec3 B = vB;
 #if MODE == MODE_SERENDIPITY
   B = serendipity(firstCorner(vElement));

@@ -1,5 +1,6 @@
 #version 450 core
 #include "lib/polygon_corners.glsl"
+#include "lib/eye_plane.glsl"
 // The element triangles (as for Gouraud), for the methods that need the whole element polygon
 // per pixel: scanline Gouraud, bilinear and serendipity quads (MODE, as polygon.frag).
 #define MODE_SCANLINE 0
@@ -13,6 +14,7 @@ uniform mat4 clipFromWorld;
 uniform vec2 viewportSize;
 
 out vec3 vPosition;  // world space, perspective-correct
+out vec4 vClip;      // its clip position (lib/pixel_centre.glsl)
 out vec3 vB;         // Gouraud, where the polygon method does not apply
 flat out uint vElement;
 #if CORNERS_PER_VERTEX
@@ -30,7 +32,9 @@ flat out vec3 vCorner[4];  // world
 
 void main() {
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
   vPosition = position;
+  vClip = gl_Position;
   vB = B;
   vElement = element;
 #if CORNERS_PER_VERTEX

@@ -1,5 +1,6 @@
 #version 450 core
 #include "lib/bezier.glsl"
+#include "lib/eye_plane.glsl"
 // Evaluates the piece at each vertex the tessellator generates (gl_TessCoord is barycentric
 // in the patch's three corners, as the net's b_ijk are); the rasteriser then interpolates
 // linearly between them (C&W §9.2: smaller polygons passed to the hardware for linear
@@ -25,4 +26,5 @@ void main() {
   }
   teWorld = position;
   gl_Position = clipFromWorld * vec4(position, 1.0);
+  clipBehindTheEye();
 }

@@ -75,6 +75,7 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
   if (evaluation.tessellation == 0) {
     const ShaderProgram& perPixel = perPixel_[degree_ == 3];
     perPixel.set("clipFromWorld", clipFromWorld);
+    perPixel.setViewportSize();
     perPixel.use();
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * patches));
     statistics_.draws = 1;

@@ -105,6 +105,7 @@ void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   const ShaderProgram& program = forward_[degree_ == 3];
   program.set("clipFromWorld", clipFromWorld);
+  program.setViewportSize();
   program.use();
   glBindVertexArray(oneCornerVao_[degree_ == 3]);
   // C1 quadratic's flat outputs are those of the vertex that reads all three corners.
@@ -120,6 +121,7 @@ void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
 
   // Pass 1: visibility and depth, into the target's colour.
   visibility_.set("clipFromWorld", clipFromWorld);
+  visibility_.setViewportSize();
   visibility_.use();
   glBindVertexArray(vao_);
   glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));

@@ -389,6 +389,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   drawOverlays(settings, camera, clipFromWorld, drawNet);
   glEndQuery(GL_TIME_ELAPSED);
   glDisable(GL_DEPTH_CLAMP);
+  glDisable(GL_CLIP_DISTANCE0);
   glDepthRange(0.0, 1.0);
   ++frame_;
   glBindVertexArray(0);
@@ -451,6 +452,12 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
   // also stops near- and far-plane clipping: a surface nearer than zNear is still drawn.
   glEnable(GL_DEPTH_CLAMP);
   glDepthRange(0.0, 0.5);
+  // Without near-plane clipping, what lies behind the eye is clipped at a plane just in front of
+  // it (shaders/lib/eye_plane.glsl).
+  const float nearestW = float(camera.zNear * 1e-2);
+  glNamedBufferData(eyePlane_, sizeof nearestW, &nearestW, GL_STREAM_DRAW);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, eyePlane_);
+  glEnable(GL_CLIP_DISTANCE0);
   if (compareMethod) {
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
     RenderSettings comparison = settings;

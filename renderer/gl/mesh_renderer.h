@@ -226,6 +226,7 @@ class MeshRenderer {
   int splitFor_ = -1;                    // the method and variant splitVbo_ holds
   // Timer queries, two in flight so reading a result never stalls the frame (beginTimer).
   std::array<GlObject, 2> timerQueries_;
+  GlObject eyePlane_{GlKind::Buffer};  // shaders/lib/eye_plane.glsl's uniform block
   int frame_ = 0;
   double gpuFrameMs_ = 0.0;
 };

@@ -3,6 +3,7 @@
 #include "core/error.h"
 #include "core/strings.h"
 #include "gl/embedded_shaders.h"
+#include "gl/rasteriser_probe.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -56,6 +57,9 @@ std::string preprocess(const std::string& text, const std::vector<std::string>& 
       for (const std::string& define : defines) out << "#define " << define << '\n';
     } else if (line.rfind(directive, 0) == 0) {
       const std::string included = line.substr(directive.size(), line.find('"', directive.size()) - directive.size());
+      // Whether this OpenGL needs it, known only from a probe of it (gl/rasteriser_probe.h).
+      if (included == "lib/pixel_centre.glsl")
+        out << "#define PIXEL_CENTRE_CORRECTION " << (pixelCentreCorrection() ? 1 : 0) << '\n';
       out << readRaw(included).text << '\n';
     } else {
       out << line << '\n';
@@ -132,6 +136,12 @@ void ShaderProgram::set(const char* name, const glm::vec4& v) const {
 }
 void ShaderProgram::set(const char* name, const glm::mat4& m) const {
   glProgramUniformMatrix4fv(program_, location(name), 1, GL_FALSE, glm::value_ptr(m));
+}
+
+void ShaderProgram::setViewportSize() const {
+  GLint viewport[4] = {};
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  set("viewportSize", glm::vec2(viewport[2], viewport[3]));
 }
 
 }  // namespace radview::gl

@@ -28,6 +28,8 @@ class ShaderProgram {
   void set(const char* name, const glm::vec3& value) const;
   void set(const char* name, const glm::vec4& value) const;
   void set(const char* name, const glm::mat4& value) const;
+  // "viewportSize" from the current viewport (shaders/lib/pixel_centre.glsl).
+  void setViewportSize() const;
 
  private:
   GLint location(const char* name) const { return glGetUniformLocation(program_, name); }

@@ -246,8 +246,36 @@ TEST_F(MeshRendererTest, ElementEdgesBehindASurfaceAreHidden) {
   settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
   renderer.render(camera, settings, width, height);
   const Image image = renderer.readDisplay();
+  const LinearImage linear = renderer.readLinear();
+  size_t shown = 0;
   for (size_t i = 0; i < image.rgba.size(); i += 4)
-    ASSERT_FALSE(image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) << "pixel " << i / 4;
+    if (image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 255) {
+      if (shown++ == 0)
+        std::cout << "first edge pixel shown: (" << i / 4 % width << ", " << i / 4 / width << ") of " << width << "x"
+                  << height << ", linear there " << linear.rgba[i] << " " << linear.rgba[i + 1] << " "
+                  << linear.rgba[i + 2] << " " << linear.rgba[i + 3] << "\n";
+    }
+  EXPECT_EQ(shown, 0u) << "edge pixels shown through the surface in front";
+}
+
+TEST_F(MeshRendererTest, NearerThanZNearIsDrawnAndBehindTheEyeIsClipped) {
+  // Depth clamping keeps surfaces nearer than zNear (0.1 here); a wall across the view 0.05 in
+  // front of the eye covers it. What lies behind the eye is clipped at a hundredth of zNear
+  // instead (shaders/lib/eye_plane.glsl): a wall 5e-4 in front of the eye is not drawn.
+  const Camera ahead = cameraAt({0, 0, 2}, {0, 0, 0});
+  auto centreAlphaWithWallAt = [&](double distance) {
+    const double z = 2 - distance, s = 2 * distance;  // wider than the view there
+    RadiosityMesh scene = mesh;
+    const uint32_t first = uint32_t(scene.nodes.size());
+    for (const Vec3& p : {Vec3(-s, -s, z), Vec3(s, -s, z), Vec3(0, s, z)}) scene.nodes.push_back({p, Rgb(0.5), {}});
+    scene.elements.push_back(Element{{first, first + 1, first + 2}, {}, 0, 0});
+    renderer.setMesh(scene);
+    renderer.render(ahead, RenderSettings{}, width, height);
+    const LinearImage image = renderer.readLinear();
+    return image.rgba[(size_t(height / 2) * width + width / 2) * 4 + 3];
+  };
+  EXPECT_EQ(centreAlphaWithWallAt(0.05), 1.0f);
+  EXPECT_EQ(centreAlphaWithWallAt(5e-4), 0.0f);
 }
 
 // An image shown in place of the mesh (the viewer's final gather): it is the linear read-back,

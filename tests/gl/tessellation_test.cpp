@@ -58,9 +58,24 @@ double srgb(double v) {
 // read-backs through the display transform (not the 8-bit images, whose rounding would hide
 // or double it), over pixels whose 3 x 3 neighbourhood is surface in both images (at the
 // silhouette a pixel centre may fall on either side of an edge the two draws place a float
-// apart). Asserted against the tolerance for the worst pixel, with 1 % for float rounding.
+// apart). Likewise where two surfaces meet at an edge (the short block's lit top and its dark
+// front): a GPU's rasteriser snaps corners to its sub-pixel grid and may give a pixel centre
+// there to the other surface in one of the draws. Such a pixel (more than 16 steps off, beside
+// a jump of more than 16 steps in the exact image) is left out, one in a thousand at most.
+// Asserted against the tolerance for the worst pixel, with 1 % for float rounding.
 void expectWithinTolerance(const Renders& r, double exposure, double tolerance, const std::string& what) {
   const int w = r.exactLinear.width, h = r.exactLinear.height;
+  const double s = std::exp2(exposure);
+  auto display = [&](int x, int y, int c) {
+    return srgb(s * r.exactLinear.rgba[(size_t(std::clamp(y, 0, h - 1)) * w + std::clamp(x, 0, w - 1)) * 4 + c]);
+  };
+  auto besideJump = [&](int x, int y) {
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int c = 0; c < 3; ++c)
+          if (std::abs(display(x + dx, y + dy, c) - display(x, y, c)) > 16.0 / 255) return true;
+    return false;
+  };
   auto covered = [&](int x, int y) {
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
@@ -70,23 +85,32 @@ void expectWithinTolerance(const Renders& r, double exposure, double tolerance, 
       }
     return true;
   };
-  const double s = std::exp2(exposure);
-  size_t pixels = 0;
+  size_t pixels = 0, switched = 0;
   double worst = 0.0;
+  int worstX = -1, worstY = -1;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       if (!covered(x, y)) continue;
       const size_t i = (size_t(y) * w + x) * 4;
+      double error = 0.0;
       for (int c = 0; c < 3; ++c) {
         const double e = std::abs(srgb(s * r.exactLinear.rgba[i + c]) - srgb(s * r.tessellatedLinear.rgba[i + c]));
-        worst = std::isnan(e) ? INFINITY : std::max(worst, e);
+        error = std::isnan(e) ? INFINITY : std::max(error, e);
       }
+      if (error > 16.0 / 255 && error != INFINITY && besideJump(x, y)) {
+        ++switched;
+        continue;
+      }
+      if (error > worst) worst = error, worstX = x, worstY = y;
       ++pixels;
     }
-  std::cout << what << ": " << pixels << " pixels, worst display error " << worst * 255 << " / tolerance "
-            << tolerance * 255 << " 8-bit steps; mean level " << r.statistics.averageLevel << ", " << r.statistics.draws
+  std::cout << what << ": " << pixels << " pixels (" << switched
+            << " beside an edge, on the other surface, left out), worst display error " << worst * 255
+            << " / tolerance " << tolerance * 255 << " 8-bit steps at pixel (" << worstX << ", " << worstY
+            << ") of the read-back; mean level " << r.statistics.averageLevel << ", " << r.statistics.draws
             << " draws\n";
   EXPECT_GT(pixels, 2000u) << what;
+  EXPECT_LE(switched, (pixels + switched) / 1000) << what;
   EXPECT_LE(worst, 1.01 * tolerance) << what;
 }
 

@@ -1,0 +1,20 @@
+#pragma once
+// Whether this OpenGL interpolates varyings over triangles whose corners it has snapped to its
+// sub-pixel grid, as GPUs do (Mesa's llvmpipe interpolates from the corners as given), and so
+// whether the per-pixel methods must move what they interpolate to the pixel centre
+// (shaders/lib/pixel_centre.glsl), which costs llvmpipe up to half a Gouraud frame.
+namespace radview::gl {
+
+// Probed once per process, on the current context, by drawing one small triangle whose corners
+// lie off every sub-pixel grid and comparing its interpolated barycentric coordinates with
+// the pixel centres' own (computed in double): more than 1e-6 apart means snapped.
+// RADVIEW_PIXEL_CENTRE=on or off overrides the probe (the tests run both). Throws Error for
+// another value.
+bool pixelCentreCorrection();
+
+// The probe itself: the largest difference it finds between interpolated and exact barycentric
+// coordinates (about 1e-7 where corners are not snapped, 1e-4 where they are); NaN if it could
+// not draw. Leaves the context's state as it found it.
+double rasteriserInterpolationError();
+
+}  // namespace radview::gl
