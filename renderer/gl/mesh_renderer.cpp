@@ -384,13 +384,20 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   // product is formed in double, so only coordinates of the scene's own size reach float.
   const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
                                 glm::translate(glm::dmat4(1.0), origin_));
+  // The radiosity pass's depth clamp, depth range and eye-plane clip end with the frame, also
+  // when a draw throws (a tessellated draw past its limit): the viewer's panel, drawn next,
+  // writes no clip distance.
+  struct PassStateReset {
+    ~PassStateReset() {
+      glDisable(GL_DEPTH_CLAMP);
+      glDisable(GL_CLIP_DISTANCE0);
+      glDepthRange(0.0, 1.0);
+    }
+  } passStateReset;
   drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison.method);
   drawDisplayPass(settings, comparison);
   drawOverlays(settings, camera, clipFromWorld, drawNet);
   glEndQuery(GL_TIME_ELAPSED);
-  glDisable(GL_DEPTH_CLAMP);
-  glDisable(GL_CLIP_DISTANCE0);
-  glDepthRange(0.0, 1.0);
   ++frame_;
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -454,7 +461,8 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
   glDepthRange(0.0, 0.5);
   // Without near-plane clipping, what lies behind the eye is clipped at a plane just in front of
   // it (shaders/lib/eye_plane.glsl).
-  const float nearestW = float(camera.zNear * 1e-2);
+  // The block's std140 size: one float padded to 16 bytes.
+  const glm::vec4 nearestW(float(camera.zNear * 1e-2), 0.0f, 0.0f, 0.0f);
   glNamedBufferData(eyePlane_, sizeof nearestW, &nearestW, GL_STREAM_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, eyePlane_);
   glEnable(GL_CLIP_DISTANCE0);
