@@ -29,22 +29,23 @@ flat in vec3 vCorner[4];
 layout(location = 0) out vec4 radiosity;
 
 vec3 surfacePoint;  // this pixel centre's (lib/pixel_centre.glsl), set first in main
+vec3 gouraudB;      // vB, at the pixel centre where the method is per pixel; set first in main
 
 // Scanline Gouraud at this pixel centre, on the polygon projected as the rasteriser sees it.
 // Elements with corners behind the eye, or more corners than the shader holds, fall back to
 // Gouraud on their triangles.
 vec3 scanline(uint first, int count) {
-  if (count > MAX_POLYGON_CORNERS) return vB;
+  if (count > MAX_POLYGON_CORNERS) return gouraudB;
   vec2 screen[MAX_POLYGON_CORNERS];
   vec3 values[MAX_POLYGON_CORNERS];
   for (int i = 0; i < count; ++i) {
     vec4 clip = clipFromWorld * vec4(cornerPosition(first + uint(i)), 1.0);
-    if (clip.w <= 0.0) return vB;
+    if (clip.w <= 0.0) return gouraudB;
     screen[i] = windowOf(clip, viewportSize);
     values[i] = cornerB(first + uint(i));
   }
   vec3 B;
-  return scanlineGouraud(count, screen, values, gl_FragCoord.xy, B) ? B : vB;
+  return scanlineGouraud(count, screen, values, gl_FragCoord.xy, B) ? B : gouraudB;
 }
 
 // The quad's own parameters (s, t) at this pixel: Newton's method for the (s, t) whose point
@@ -117,7 +118,7 @@ bool smallPolygonValue(out vec3 B) {
   }
 #endif
 #endif
-  B = vB;
+  B = gouraudB;
   if (count == 0) return false;
 #if MODE == MODE_SCANLINE
   vec3 scanned;
@@ -132,10 +133,13 @@ bool smallPolygonValue(out vec3 B) {
 }
 
 void main() {
+  gouraudB = vB;
 #if MODE != MODE_SCANLINE
-  surfacePoint = AT_PIXEL_CENTRE(vPosition, pixelCentreStep(vClip));
+  vec2 step = pixelCentreStep(vClip);
+  surfacePoint = AT_PIXEL_CENTRE(vPosition, step);
+  gouraudB = AT_PIXEL_CENTRE(vB, step);  // a triangle's bilinear value is its linear one
 #endif
-  vec3 B = vB;
+  vec3 B = gouraudB;
 #if MODE == MODE_SERENDIPITY
   B = serendipity(firstCorner(vElement));
 #else

@@ -65,27 +65,25 @@ void DeferredPass::upload(size_t triangles, int degree, const NetFill& fill) {
   const GLsizeiptr cornerBytes = GLsizeiptr(3 * triangles * sizeof(glm::vec3));
   // One triangle more: the one pass's last vertex reads up to 88 bytes past its triangle's.
   const GLsizeiptr netBytes = GLsizeiptr(vec4s * (triangles + 1) * sizeof(glm::vec4));
-  glNamedBufferData(corners_, cornerBytes, nullptr, GL_STATIC_DRAW);
-  glNamedBufferData(nets_, netBytes, nullptr, GL_STATIC_DRAW);
-  // Written where the GL keeps them: no copy on the CPU's side (on a software GL, none at all).
-  auto* corners = static_cast<glm::vec3*>(glMapNamedBufferRange(corners_, 0, cornerBytes, GL_MAP_WRITE_BIT));
-  auto* nets = static_cast<glm::vec4*>(glMapNamedBufferRange(nets_, 0, netBytes, GL_MAP_WRITE_BIT));
-  bool written = corners && nets;
-  if (written) fill(corners, nets);
-  // Unmapping fails only where the GL lost the memory meanwhile (on a display mode change).
-  if (corners && !glUnmapNamedBuffer(corners_)) written = false;
-  if (nets && !glUnmapNamedBuffer(nets_)) written = false;
-  if (!written)
-    throw Error(pieces + "the GL could not map " + std::to_string(cornerBytes + netBytes) + " bytes for " +
-                std::to_string(triangles) + " triangles' control values");
+  // Written where the GL reads them: the CPU keeps no copy of its own.
+  triangles_ = 0;  // until written
+  try {
+    auto* corners = reinterpret_cast<glm::vec3*>(storage_.reserve(corners_, size_t(cornerBytes)));
+    auto* nets = reinterpret_cast<glm::vec4*>(storage_.reserve(nets_, size_t(netBytes)));
+    fill(corners, nets);
+    storage_.commit(corners_);
+    storage_.commit(nets_);
+  } catch (const Error& e) {
+    throw Error(pieces + std::to_string(triangles) + " triangles' control values: " + e.what());
+  }
   glTextureBuffer(netsTexture_, GL_RGBA32F, nets_);
   triangles_ = triangles;
   degree_ = degree;
 }
 
 void DeferredPass::clear() {
-  glNamedBufferData(corners_, 0, nullptr, GL_STATIC_DRAW);
-  glNamedBufferData(nets_, 0, nullptr, GL_STATIC_DRAW);
+  storage_.clear(corners_);
+  storage_.clear(nets_);
   triangles_ = 0;
 }
 

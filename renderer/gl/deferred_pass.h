@@ -7,6 +7,7 @@
 // the GPU holds 36 bytes of corners and 144 of control values per triangle, where drawing
 // every piece as its own triangle with its net on each vertex took 1,440 (Clough-Tocher) and
 // 2,880 (Powell-Sabin) (C&W §9.2.2).
+#include "gl/buffer_storage.h"
 #include "gl/patch_nets.h"
 #include "gl/shader_program.h"
 
@@ -27,7 +28,8 @@ class DeferredPass {
   // fill(corners, nets) writes every triangle: 3 corners and kNetVec4s vec4 each (gl/patch_nets.h).
   using NetFill = std::function<void(glm::vec3* corners, glm::vec4* nets)>;
   // Allocates room for `triangles` triangles of pieces of `degree`, then has `fill` write them
-  // all, once, straight into the GL's buffers (mapped): the CPU holds no copy of its own.
+  // all, once, straight into the GL's buffers (gl/buffer_storage.h): the CPU holds no copy of
+  // its own.
   // Throws Error for more than this OpenGL's buffer textures hold, or than a float counts
   // exactly (2^24 - 1, the visibility pass's triangle numbers).
   void upload(size_t triangles, int degree, const NetFill& fill);
@@ -45,6 +47,7 @@ class DeferredPass {
 
  private:
   void drawDeferred(const glm::mat4& clipFromWorld, GLuint target);
+  BufferStorage storage_;  // freed after ~DeferredPass deletes the buffers that use it
   void drawForward(const glm::mat4& clipFromWorld, GLuint target);
   ShaderProgram visibility_{{"visibility.vert", "visibility.frag"}};
   // One evaluation program per degree, quadratic [0] and cubic [1], and so the one-pass ones.

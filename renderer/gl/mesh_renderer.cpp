@@ -124,11 +124,8 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   const DisplayMesh& display = prepared.display;
-  // glNamedBufferData, not Storage: the buffers are re-specified when another file is opened.
-  glNamedBufferData(meshVbo_, display.triangles.size() * sizeof(DisplayVertex), display.triangles.data(),
-                    GL_STATIC_DRAW);
-  glNamedBufferData(edgeVbo_, display.elementEdges.size() * sizeof(glm::vec3), display.elementEdges.data(),
-                    GL_STATIC_DRAW);
+  storage_.upload(meshVbo_, display.triangles.data(), display.triangles.size() * sizeof(DisplayVertex));
+  storage_.upload(edgeVbo_, display.elementEdges.data(), display.elementEdges.size() * sizeof(glm::vec3));
   std::vector<OverlayVertex> overlay = display.discontinuityEdges;
   overlay.insert(overlay.end(), display.tVertices.begin(), display.tVertices.end());
   glNamedBufferData(overlayVbo_, overlay.size() * sizeof(OverlayVertex), overlay.data(), GL_STATIC_DRAW);
@@ -139,10 +136,10 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   std::vector<DisplayVertex> serendipity;
   for (const DisplayVertex& v : display.triangles)
     if (isSerendipityQuad(*prepared.drawn, v.element)) serendipity.push_back(v);
-  glNamedBufferData(serendipityVbo_, serendipity.size() * sizeof(DisplayVertex), serendipity.data(), GL_STATIC_DRAW);
+  storage_.upload(serendipityVbo_, serendipity.data(), serendipity.size() * sizeof(DisplayVertex));
   serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
-  glNamedBufferData(polygonCorners_, 0, nullptr, GL_STATIC_DRAW);  // uploaded when first drawn
-  glNamedBufferData(polygonOffsets_, 0, nullptr, GL_STATIC_DRAW);
+  storage_.clear(polygonCorners_);  // uploaded when first drawn
+  storage_.clear(polygonOffsets_);
   polygonsUploaded_ = false;
   original_ = std::move(prepared.original);
   mesh_ = std::move(prepared.drawn);
@@ -325,8 +322,8 @@ void MeshRenderer::uploadPolygons() {
     throw Error("element polygons: " + std::to_string(corners.size() / 3) + " corners need " +
                 std::to_string(corners.size()) + " texels, more than this OpenGL's buffer textures hold (" +
                 std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
-  glNamedBufferData(polygonCorners_, corners.size() * sizeof(glm::vec4), corners.data(), GL_STATIC_DRAW);
-  glNamedBufferData(polygonOffsets_, offsets.size() * sizeof(uint32_t), offsets.data(), GL_STATIC_DRAW);
+  storage_.upload(polygonCorners_, corners.data(), corners.size() * sizeof(glm::vec4));
+  storage_.upload(polygonOffsets_, offsets.data(), offsets.size() * sizeof(uint32_t));
   glTextureBuffer(polygonCornerTexels_, GL_RGBA32F, polygonCorners_);
   glTextureBuffer(polygonOffsetTexels_, GL_R32UI, polygonOffsets_);
   polygonsUploaded_ = true;

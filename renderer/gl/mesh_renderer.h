@@ -7,6 +7,7 @@
 #include "core/camera.h"
 #include "core/image.h"
 #include "gl/bezier_pass.h"
+#include "gl/buffer_storage.h"
 #include "gl/deferred_pass.h"
 #include "gl/gl_object.h"
 #include "gl/prepared_mesh.h"
@@ -127,6 +128,8 @@ class MeshRenderer {
   size_t tVertexCount() const { return size_t(tVertexMarkers_); }
 
  private:
+  // Storage of the mesh's buffers, declared first: freed after the buffers that use it.
+  BufferStorage storage_;
   RenderTargets targets_;
   ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};

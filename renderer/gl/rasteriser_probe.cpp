@@ -52,13 +52,30 @@ double rasteriserInterpolationError() {
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertexArray);
   glGetIntegerv(GL_VIEWPORT, viewport);
-  const GLenum capabilities[] = {GL_DEPTH_TEST,   GL_BLEND,        GL_CULL_FACE,
-                                 GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_RASTERIZER_DISCARD};
+  GLint polygonMode[2] = {GL_FILL, GL_FILL}, packBuffer = 0;
+  glGetIntegerv(GL_POLYGON_MODE, polygonMode);
+  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+  GLboolean colourMask[4] = {GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE};
+  glGetBooleani_v(GL_COLOR_WRITEMASK, 0, colourMask);
+  const GLenum packParameters[] = {GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS, GL_PACK_SKIP_PIXELS, GL_PACK_ALIGNMENT};
+  std::vector<GLint> packed;
+  for (GLenum p : packParameters) {
+    GLint value = 0;
+    glGetIntegerv(p, &value);
+    packed.push_back(value);
+    glPixelStorei(p, p == GL_PACK_ALIGNMENT ? 4 : 0);
+  }
+  const GLenum capabilities[] = {GL_DEPTH_TEST,   GL_BLEND,        GL_CULL_FACE,         GL_SCISSOR_TEST,
+                                 GL_STENCIL_TEST, GL_RASTERIZER_DISCARD, GL_CLIP_DISTANCE0, GL_SAMPLE_COVERAGE,
+                                 GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_MASK};
   std::vector<GLboolean> enabled;
   for (GLenum c : capabilities) {
     enabled.push_back(glIsEnabled(c));
     glDisable(c);
   }
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 
   const GLuint vertex = compiled(GL_VERTEX_SHADER, kVertexSource);
   const GLuint fragment = compiled(GL_FRAGMENT_SHADER, kFragmentSource);
@@ -111,6 +128,10 @@ double rasteriserInterpolationError() {
   glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
   for (size_t i = 0; i < enabled.size(); ++i)
     if (enabled[i]) glEnable(capabilities[i]);
+  glPolygonMode(GL_FRONT_AND_BACK, GLenum(polygonMode[0]));
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(packBuffer));
+  glColorMaski(0, colourMask[0], colourMask[1], colourMask[2], colourMask[3]);
+  for (size_t i = 0; i < packed.size(); ++i) glPixelStorei(packParameters[i], packed[i]);
   if (!ready) return NAN;
 
   // The pixel centres' own barycentric coordinates (window space is affine here: w = 1).
@@ -143,7 +164,7 @@ bool pixelCentreCorrection() {
     }
     // A probe that could not run decides for the correction: exact on any rasteriser.
     const double error = rasteriserInterpolationError();
-    return !(error <= 1e-6);
+    return !(error <= kSnappedInterpolationError);
   }();
   return correct;
 }

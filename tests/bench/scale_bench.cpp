@@ -226,7 +226,7 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
 int main(int argc, char** argv) {
   using namespace radview;
   std::vector<double> sizes;
-  int rounds = 40, renderRounds = 5, width = 1920, height = 1080;
+  int rounds = 40, renderRounds = 7, width = 1920, height = 1080;
   std::string methods;
   for (int i = 1; i + 1 < argc; i += 2) {
     if (!std::strcmp(argv[i], "--element-size"))
