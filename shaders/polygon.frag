@@ -4,7 +4,9 @@
 #include "lib/scanline_gouraud.glsl"
 // Scanline Gouraud (fig. 9.7), bilinear quads and 8-node serendipity quads per pixel, from the
 // element's polygon. MODE, defined by the program, picks one (a compile-time choice: llvmpipe
-// pays for both sides of a branch on a uniform).
+// pays for both sides of a branch on a uniform). LARGE_POLYGONS (scanline only) is 1 where the
+// mesh has elements of more than four corners: the loop over any polygon's edges, with its
+// arrays in memory, costs llvmpipe about one Gouraud frame even where no pixel takes it.
 #define MODE_SCANLINE 0
 #define MODE_BILINEAR 1
 #define MODE_SERENDIPITY 2
@@ -31,6 +33,7 @@ layout(location = 0) out vec4 radiosity;
 vec3 surfacePoint;  // this pixel centre's (lib/pixel_centre.glsl), set first in main
 vec3 gouraudB;      // vB, at the pixel centre where the method is per pixel; set first in main
 
+#if MODE == MODE_SCANLINE && LARGE_POLYGONS
 // Scanline Gouraud at this pixel centre, on the polygon projected as the rasteriser sees it.
 // Elements with corners behind the eye, or more corners than the shader holds, fall back to
 // Gouraud on their triangles.
@@ -47,6 +50,7 @@ vec3 scanline(uint first, int count) {
   vec3 B;
   return scanlineGouraud(count, screen, values, gl_FragCoord.xy, B) ? B : gouraudB;
 }
+#endif
 
 // The quad's own parameters (s, t) at this pixel: Newton's method for the (s, t) whose point
 // x(s, t) is nearest this pixel centre's surface point, as renderer/interp/bilinear_map.cpp does.
@@ -144,7 +148,7 @@ void main() {
   B = serendipity(firstCorner(vElement));
 #else
   if (!smallPolygonValue(B)) {
-#if MODE == MODE_SCANLINE
+#if MODE == MODE_SCANLINE && LARGE_POLYGONS
     uint first = firstCorner(vElement);
     B = scanline(first, int(firstCorner(vElement + 1u) - first));
 #endif

@@ -305,9 +305,11 @@ void MeshRenderer::uploadPolygons() {
   std::vector<glm::vec4> corners;
   std::vector<uint32_t> offsets{0};
   offsets.reserve(mesh_->elements.size() + 1);
+  largePolygons_ = false;
   for (size_t e = 0; e < mesh_->elements.size(); ++e) {
     const Element& element = mesh_->elements[e];
     const bool quad = isSerendipityQuad(*mesh_, e);
+    largePolygons_ = largePolygons_ || element.corners.size() > 4;
     for (size_t k = 0; k < element.corners.size(); ++k) {
       const Node& node = mesh_->nodes[element.corners[k]];
       corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
@@ -337,7 +339,9 @@ void MeshRenderer::drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, 
   // (1080p, radview_scale_bench: bilinear 1.30-1.37x Gouraud's frame time per vertex and
   // 1.43-1.44x per pixel at 1.2e5 elements, 1.53-1.59x and 1.37-1.38x at 4.6e5).
   const bool perVertex = mode != PolygonMode::Serendipity && int64_t(vertices) < int64_t(width) * height;
-  const ShaderProgram& program = perVertex ? polygonProgramsPerVertex_[int(mode)] : polygonPrograms_[int(mode)];
+  const ShaderProgram& program = mode == PolygonMode::Scanline && largePolygons_ ? largePolygonScanline_[perVertex]
+                                 : perVertex                                     ? polygonProgramsPerVertex_[int(mode)]
+                                                                                 : polygonPrograms_[int(mode)];
   program.set("clipFromWorld", clipFromWorld);
   program.set("viewportSize", glm::vec2(width, height));
   program.use();

@@ -139,19 +139,25 @@ class MeshRenderer {
   enum class PolygonMode : int { Scanline = 0, Bilinear = 1, Serendipity = 2 };
   // Each mode reading the element's corners per pixel; and scanline and bilinear reading a
   // triangle's or quad's per vertex, as flat outputs (CORNERS_PER_VERTEX; drawPolygons picks).
-  ShaderProgram polygonPrograms_[3] = {
-      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE", "CORNERS_PER_VERTEX 0"}),
-      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR", "CORNERS_PER_VERTEX 0"}),
-      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SERENDIPITY", "CORNERS_PER_VERTEX 0"})};
-  ShaderProgram polygonProgramsPerVertex_[2] = {
-      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_SCANLINE", "CORNERS_PER_VERTEX 1"}),
-      ShaderProgram({"polygon.vert", "polygon.frag"}, {"MODE MODE_BILINEAR", "CORNERS_PER_VERTEX 1"})};
+  // Scanline Gouraud also for meshes with larger polygons (LARGE_POLYGONS, polygon.frag).
+  static ShaderProgram polygonProgram(const char* mode, bool cornersPerVertex, bool largePolygons = false) {
+    return ShaderProgram({"polygon.vert", "polygon.frag"},
+                         {std::string("MODE ") + mode, std::string("CORNERS_PER_VERTEX ") + (cornersPerVertex ? "1" : "0"),
+                          std::string("LARGE_POLYGONS ") + (largePolygons ? "1" : "0")});
+  }
+  ShaderProgram polygonPrograms_[3] = {polygonProgram("MODE_SCANLINE", false), polygonProgram("MODE_BILINEAR", false),
+                                       polygonProgram("MODE_SERENDIPITY", false)};
+  ShaderProgram polygonProgramsPerVertex_[2] = {polygonProgram("MODE_SCANLINE", true),
+                                                polygonProgram("MODE_BILINEAR", true)};
+  ShaderProgram largePolygonScanline_[2] = {polygonProgram("MODE_SCANLINE", false, true),
+                                            polygonProgram("MODE_SCANLINE", true, true)};  // [per vertex]
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GlObject overlayVao_, overlayVbo_;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
   GlObject polygonCorners_, polygonOffsets_;                // element polygons (lib/polygon_corners.glsl)
   GlObject polygonCornerTexels_, polygonOffsetTexels_;      // the shaders read them as buffer textures
   bool polygonsUploaded_ = false;                           // only the methods that draw polygons need them
+  bool largePolygons_ = false;                              // any element of more than four corners
   void uploadPolygons();
   // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
   GlObject serendipityVao_, serendipityVbo_;
