@@ -19,6 +19,12 @@ constexpr size_t kSlack = 64;
 
 std::string megabytes(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MB"; }
 
+bool holds(GLuint buffer, size_t bytes) {
+  GLint64 size = 0;
+  glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &size);
+  return size == GLint64(bytes);
+}
+
 }  // namespace
 
 BufferStorage::BufferStorage(bool pinnedWhereOffered)
@@ -80,11 +86,31 @@ void BufferStorage::commit(GLuint buffer) {
       throw Error("the GL lost " + megabytes(block.bytes) + " of a buffer while it was written");
     return;
   }
+  // The buffer is emptied first, so that its size tells whether the GL took the memory: a
+  // driver may offer the extension and still refuse some memory (GL_INVALID_OPERATION, AMD_
+  // pinned_memory), and a refused buffer keeps its old storage.
+  glNamedBufferData(buffer, 0, nullptr, GL_STATIC_DRAW);
   glBindBuffer(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, buffer);
   glBufferData(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, GLsizeiptr(block.bytes), block.memory, GL_STATIC_DRAW);
   glBindBuffer(GL_EXTERNAL_VIRTUAL_MEMORY_BUFFER_AMD, 0);
-  if (auto held = held_.find(buffer); held != held_.end()) release(held->second);
-  held_[buffer] = block;
+  if (auto held = held_.find(buffer); held != held_.end()) {
+    release(held->second);
+    held_.erase(held);
+  }
+  if (holds(buffer, block.bytes)) {
+    held_[buffer] = block;
+    return;
+  }
+  // Refused: the GL copies it into storage of its own instead.
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  glNamedBufferData(buffer, GLsizeiptr(block.bytes), block.memory, GL_STATIC_DRAW);
+  munmap(block.memory, block.mapped);
+  if (!holds(buffer, block.bytes)) {
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw Error("the GL took neither " + megabytes(block.bytes) + " of this process's memory as a buffer nor a copy");
+  }
 }
 
 void BufferStorage::upload(GLuint buffer, const void* data, size_t bytes) {

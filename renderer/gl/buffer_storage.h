@@ -26,7 +26,8 @@ class BufferStorage {
   // commit(buffer). Throws Error if the GL cannot give them.
   std::byte* reserve(GLuint buffer, size_t bytes);
   // Makes what was written since reserve(buffer) the buffer's contents, and frees its previous
-  // storage. Throws Error if the GL lost the mapped storage meanwhile.
+  // storage; where the GL refuses this process's memory, it gets a copy. Throws Error if the GL
+  // lost the mapped storage meanwhile, or takes neither the memory nor a copy.
   void commit(GLuint buffer);
   // reserve, copy, commit.
   void upload(GLuint buffer, const void* data, size_t bytes);

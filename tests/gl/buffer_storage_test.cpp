@@ -1,6 +1,7 @@
 // Buffers written in place (gl/buffer_storage.h): in this process's memory where the GL takes
 // it (llvmpipe), in the GL's own mapped storage elsewhere; both ways on every GL here.
 #include "gl/buffer_storage.h"
+#include "core/error.h"
 #include "gl/egl_context.h"
 
 #include <epoxy/gl.h>
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <iostream>
 #include <numeric>
+#include <string>
 #include <vector>
 
 namespace radview::gl {
@@ -98,6 +100,28 @@ TEST(BufferStorage, WritesReplacesAndClearsTheGlsOwnStorage) {
   EglContext context;
   EXPECT_FALSE(BufferStorage(false).pinned());
   writeReplaceAndClear(false);
+}
+
+// A buffer whose storage the GL will not replace (immutable) takes neither this process's
+// memory nor a copy: a clear error, no GL error left behind, and the buffer as it was.
+TEST(BufferStorage, StorageTheGlRefusesIsAnError) {
+  EglContext context;
+  BufferStorage storage;
+  if (!storage.pinned()) GTEST_SKIP() << "GL_AMD_pinned_memory not offered";
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  const std::vector<float> before = {1.0f, 2.0f};
+  glNamedBufferStorage(buffer, GLsizeiptr(before.size() * sizeof(float)), before.data(), 0);
+  const std::vector<float> values(100, 3.0f);
+  try {
+    storage.upload(buffer, values.data(), values.size() * sizeof(float));
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("took neither"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  EXPECT_EQ(contents(buffer), before);
+  glDeleteBuffers(1, &buffer);
 }
 
 }  // namespace
