@@ -4,15 +4,15 @@
 #include "app/import_flags.h"
 #include "app/method_choice.h"
 #include "app/viewed_file.h"
+#include "bench/bench_reference.h"
 #include "bench/bench_variants.h"
 #include "bench/image_error.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
 #include "core/atomic_file.h"
 #include "core/camera.h"
-#include "core/display_transform.h"
 #include "core/error.h"
-#include "core/image_difference.h"
+#include "core/limits.h"
 #include "core/memory_budget.h"
 #include "core/strings.h"
 #include "gather/final_gather.h"
@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace radview {
@@ -48,21 +49,141 @@ std::vector<double> numberList(const std::string& text, const std::string& optio
   return values;
 }
 
+// --truth: a linear image of the bench's size, every pixel finite and non-negative.
+LinearImage readTruth(const std::string& path, int width, int height) {
+  if (!std::filesystem::exists(path)) throw Error(path, "--truth: no such file");
+  const ReferenceImage image = readReferenceImage(path);
+  if (!image.linear)
+    throw Error(path, "--truth: holds display colour (8 or 16-bit integers); it must be linear radiosity in a float "
+                      "format such as OpenEXR");
+  if (image.pixels.width != width || image.pixels.height != height)
+    throw Error(path, "--truth: is " + std::to_string(image.pixels.width) + "x" + std::to_string(image.pixels.height) +
+                          ", the bench renders " + std::to_string(width) + "x" + std::to_string(height) +
+                          " (--size)");
+  for (size_t i = 0; i < image.pixels.rgba.size(); ++i) {
+    const float v = image.pixels.rgba[i];
+    if (i % 4 == 3) continue;
+    const std::string where = "pixel " + std::to_string(i / 4 % size_t(width)) + ", " +
+                              std::to_string(i / 4 / size_t(width)) + " (from the top left)";
+    if (!std::isfinite(v)) throw Error(path, "--truth: " + where + " is not a finite number");
+    if (v < 0.0f) throw Error(path, "--truth: " + where + " is negative (" + std::to_string(v) + ")");
+  }
+  return image.pixels;
+}
+
+// One line on standard error, rewritten in place at most twice a second: a bar, what is done,
+// and the time left.
+void showProgress(double fraction, const std::string& detail, double secondsLeft) {
+  static auto last = std::chrono::steady_clock::time_point{};
+  const auto now = std::chrono::steady_clock::now();
+  if (fraction < 1.0 && now - last < std::chrono::milliseconds(500)) return;
+  last = now;
+  constexpr int kWidth = 30;
+  const int filled = int(std::clamp(fraction, 0.0, 1.0) * kWidth + 0.5);
+  std::fprintf(stderr, "\r[%s%s] %s, %.0f s left   ", std::string(size_t(filled), '#').c_str(),
+               std::string(size_t(kWidth - filled), ' ').c_str(), detail.c_str(), std::max(0.0, secondsLeft));
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A row rendered: what the table reports of it, and its values for the error estimates.
+struct MeasuredRow {
+  TradeoffRow row;
+  RowValues values;
+};
+
+// The widest 95 % interval of the rows' display errors, half of it, in steps.
+double widestHalfInterval(const std::vector<MeasuredRow>& rows, const BenchReference& reference) {
+  double widest = 0.0;
+  for (const MeasuredRow& r : rows) {
+    const ErrorEstimate e = reference.error(r.values).display;
+    widest = std::max(widest, 0.5 * (e.rmsHigh() - e.rmsLow()));
+  }
+  return widest;
+}
+
+// The final gather at pixel centres in `runs` independent runs, until `spp` samples per pixel
+// and then, with `precision` > 0, until every row's interval is that narrow (or `maxSeconds`).
+void gatherReference(const RadiosityMesh& mesh, const BenchOptions& options, const GatherSettings& settings,
+                     const std::vector<MeasuredRow>& rows, BenchReference& reference, int& spp, double& seconds) {
+  const auto start = std::chrono::steady_clock::now();
+  FinalGather gather(mesh, settings);
+  const int runs = settings.runs;
+  const int target = (options.spp + runs - 1) / runs * runs;
+  auto runImages = [&] {
+    std::vector<LinearImage> images;
+    for (int r = 0; r < runs; ++r) images.push_back(gather.runImage(r));
+    return images;
+  };
+  while (gather.samplesPerPixel() < target) {
+    gather.addPasses(runs);
+    const double elapsed = secondsSince(start);
+    const double done = double(gather.samplesPerPixel()) / target;
+    showProgress(done, "reference " + std::to_string(gather.samplesPerPixel()) + "/" + std::to_string(target) + " spp",
+                 elapsed / done - elapsed);
+  }
+  reference.setRuns(runImages());
+  if (options.precision > 0.0) {
+    // The interval narrows as 1/sqrt(spp) or faster, so the passes still needed are about
+    // spp ((w / precision)^2 - 1): the time left is estimated from that.
+    for (double widest = widestHalfInterval(rows, reference); widest > options.precision;
+         widest = widestHalfInterval(rows, reference)) {
+      const double elapsed = secondsSince(start);
+      if (options.maxSeconds > 0.0 && elapsed >= options.maxSeconds) break;
+      if (gather.samplesPerPixel() + runs > kMaxGatherSpp) break;
+      const double needed = gather.samplesPerPixel() * (widest * widest / (options.precision * options.precision));
+      showProgress(gather.samplesPerPixel() / needed,
+                   "reference " + std::to_string(gather.samplesPerPixel()) + " spp, widest half-interval " +
+                       std::to_string(widest).substr(0, 5) + " steps (target " +
+                       std::to_string(options.precision).substr(0, 5) + ")",
+                   elapsed / gather.samplesPerPixel() * (needed - gather.samplesPerPixel()));
+      gather.addPasses(runs);
+      reference.setRuns(runImages());
+    }
+  }
+  std::fprintf(stderr, "\n");
+  spp = gather.samplesPerPixel();
+  seconds = secondsSince(start);
+}
+
+
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   CLI::App* command =
       app.add_subcommand("bench",
                          "Measure every method and setting on one view: GPU frame time, triangles, error against the "
-                         "per-pixel final gather, Mach bands; writes a Markdown table, CSV and a plot");
+                         "per-pixel final gather (its noise taken out, with 95 % intervals), Mach bands; writes a "
+                         "Markdown table, CSV, a plot and every row's linear image");
   command->add_option("file", o.file, "A solution file, or a scene (meshed and lit directly)")->required();
   addImportOptions(*command, o.import);
   command->add_option("--camera", o.camera, "As render --camera");
   command->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--exposure", o.exposure, "Exposure in stops")->capture_default_str();
-  command->add_option("--spp", o.spp, "Samples per pixel of the final-gather reference")
+  command->add_option("--spp", o.spp, "Samples per pixel of the final-gather reference, all runs together")
       ->check(CLI::Range(1, kMaxGatherSpp))
       ->capture_default_str();
+  command
+      ->add_option("--runs", o.runs,
+                   "Independent runs of the reference, each its own sample sequences: their spread is its noise, "
+                   "which the error estimates take out")
+      ->check(CLI::Range(4, kMaxGatherRuns))
+      ->capture_default_str();
+  command
+      ->add_option("--precision", o.precision,
+                   "Add reference passes until every row's 95 % interval is narrower than twice this (display "
+                   "steps), or --max-seconds; 0: --spp only")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  command->add_option("--max-seconds", o.maxSeconds, "With --precision: stop adding passes after this long; 0: no limit")
+      ->check(CLI::Range(0.0, 1e9))
+      ->capture_default_str();
+  command
+      ->add_option("--truth", o.truth,
+                   "Measure against this linear image (OpenEXR or another float format, the bench's size) instead "
+                   "of the gather: an analytic answer, a path tracer's render of the view; exact errors, no interval");
   command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
       ->check(methodChoice(methodNames(true)))
       ->capture_default_str();
@@ -86,7 +207,8 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       ->capture_default_str();
   command
       ->add_option("--out-dir", o.outDir,
-                   "Where bench.md, bench.csv, bench.png, reference.exr/.png and each method's PNG go")
+                   "Where bench.md, bench.csv, bench.png, reference.exr/.png, each method's PNG and each row's "
+                   "linear EXR go")
       ->capture_default_str();
   command->add_option("--element-size", o.elementSize, "Scenes: element size of the uniform mesh")
       ->check(CLI::Range(1e-12, 1e12));
@@ -94,6 +216,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
 }
 
 int runBench(const BenchOptions& options) {
+  const auto benchStart = std::chrono::steady_clock::now();
   int width = 0, height = 0;
   parseSize(options.size, width, height);
   checkImageMemory(options.size, width, height, kBenchBytesPerPixel, "the bench's reference and renders");
@@ -107,40 +230,30 @@ int runBench(const BenchOptions& options) {
   for (double t : tolerances)
     if (!(t >= 0.01 && t <= 100.0))
       throw Error("--tolerances: " + std::to_string(t) + " is not within 0.01..100 steps");
+  // A bad --truth is refused before minutes of work.
+  const std::optional<LinearImage> truth =
+      options.truth.empty() ? std::nullopt : std::optional<LinearImage>(readTruth(options.truth, width, height));
   std::error_code ec;
   std::filesystem::create_directories(options.outDir, ec);
   if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
-  checkFinalGatherRuns(viewed);  // the reference of every row
+  if (!truth) checkFinalGatherRuns(viewed);  // the reference of every row
   const RadiosityMesh& mesh = viewed.mesh;
   const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
   const double exposureScale = std::exp2(options.exposure);
 
-  // The reference: the final gather at the same camera and size.
-  GatherSettings gather;
-  gather.interpolant = methodFromName(options.gatherInterpolant);
-  gather.width = width;
-  gather.height = height;
-  gather.camera = camera;
-  const auto start = std::chrono::steady_clock::now();
-  FinalGather reference(mesh, gather);
-  reference.addPasses(options.spp);
-  const double gatherSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const ReferenceImage referenceImage{reference.image(), true, options.outDir + "/reference.exr"};
-  writeLinearImage(referenceImage.pixels, referenceImage.path);
-  writePng(displayedGather(referenceImage.pixels, exposureScale), options.outDir + "/reference.png");
-  std::printf("reference: final gather, %d spp, B^ %s, %dx%d: %.1f s\n", options.spp, options.gatherInterpolant.c_str(),
-              width, height, gatherSeconds);
-
   const std::vector<int32_t> elementAt = visibleElements(mesh, camera, width, height);
-  const EdgeStencils stencils = edgeStencils(mesh, elementAt, width, height);
+  EdgeStencils stencils = edgeStencils(mesh, elementAt, width, height);
   // Errors are taken where a pixel and its four neighbours see one plane: along silhouettes
-  // the reference antialiases (it averages the surfaces a pixel covers) and the GL renderer
-  // does not, a difference of sampling, not of interpolation.
+  // a path tracer's reference antialiases (it averages the surfaces a pixel covers) and the GL
+  // renderer does not, a difference of sampling, not of interpolation.
   const std::vector<char> interior = interiorPixels(mesh, elementAt, width, height);
-  const double referenceMach = meanGradientJump(referenceImage.pixels, exposureScale, stencils.smooth);
-  const double referenceKinks = meanGradientJump(referenceImage.pixels, exposureScale, stencils.c0);
+  std::vector<uint32_t> compared;
+  for (size_t p = 0; p < interior.size(); ++p)
+    if (interior[p]) compared.push_back(uint32_t(p));
+  BenchReference reference(width, height, std::move(compared), std::move(stencils.smooth), std::move(stencils.c0),
+                           exposureScale);
 
   // Clough-Tocher without relaxation: the same mesh with its C0 tags dropped (C-1 edges keep
   // their separate nodes, so they stay C-1).
@@ -152,92 +265,138 @@ int runBench(const BenchOptions& options) {
 
   const std::vector<BenchVariant> variants = benchVariants(levels, tolerances, hasC0, gl::kAdaptiveTessellation);
 
-  gl::EglContext context;
-  gl::MeshRenderer renderer;
-  bool relaxedLoaded = true;
-  renderer.setMesh(mesh);
-  std::vector<TradeoffRow> rows;
-  // Per method and mesh: the triangles of a frame at a fixed level L over L^2, measured at the
-  // first level drawn. From it a finer level's count is known before it is drawn: at 10^5
-  // elements and 1080p, level 32 makes 7e8 triangles and takes 44 s a frame on llvmpipe, for
-  // an image the per-pixel row already shows exactly.
-  std::map<std::pair<int, bool>, double> trianglesPerLevelSquared;
+  std::vector<MeasuredRow> rows;
   std::vector<std::string> skipped;
-  for (const BenchVariant& v : variants) {
-    const bool fixedLevel = v.tessellation > 0 && v.tessellation != gl::kAdaptiveTessellation;
-    const std::pair<int, bool> methodAndMesh{int(v.method), v.relaxed};
-    const auto perLevelSquared = trianglesPerLevelSquared.find(methodAndMesh);
-    if (fixedLevel && options.maxTrianglesPerPixel > 0.0 && perLevelSquared != trianglesPerLevelSquared.end() &&
-        perLevelSquared->second * v.tessellation * v.tessellation >
-            options.maxTrianglesPerPixel * double(width) * double(height)) {
-      skipped.push_back(methodName(v.method) + " " + v.setting);
-      continue;
+  {
+    gl::EglContext context;
+    gl::MeshRenderer renderer;
+    bool relaxedLoaded = true;
+    renderer.setMesh(mesh);
+    // Per method and mesh: the triangles of a frame at a fixed level L over L^2, measured at the
+    // first level drawn. From it a finer level's count is known before it is drawn: at 10^5
+    // elements and 1080p, level 32 makes 7e8 triangles, for an image the per-pixel row already
+    // shows exactly.
+    std::map<std::pair<int, bool>, double> trianglesPerLevelSquared;
+    for (const BenchVariant& v : variants) {
+      const bool fixedLevel = v.tessellation > 0 && v.tessellation != gl::kAdaptiveTessellation;
+      const std::pair<int, bool> methodAndMesh{int(v.method), v.relaxed};
+      const auto perLevelSquared = trianglesPerLevelSquared.find(methodAndMesh);
+      if (fixedLevel && options.maxTrianglesPerPixel > 0.0 && perLevelSquared != trianglesPerLevelSquared.end() &&
+          perLevelSquared->second * v.tessellation * v.tessellation >
+              options.maxTrianglesPerPixel * double(width) * double(height)) {
+        skipped.push_back(methodName(v.method) + " " + v.setting);
+        continue;
+      }
+      if (v.relaxed != relaxedLoaded) {
+        renderer.setMesh(v.relaxed ? mesh : unrelaxed);
+        relaxedLoaded = v.relaxed;
+      }
+      gl::RenderSettings settings;
+      settings.method = v.method;
+      settings.tessellation = v.tessellation;
+      settings.tessellationTolerance = v.tolerance / 255.0;
+      settings.exposure = options.exposure;
+      // Two frames first: the pieces are built and the caches warm; then each frame is timed
+      // by its own query, read once it is done.
+      for (int k = 0; k < 2; ++k) {
+        renderer.render(camera, settings, width, height);
+        glFinish();
+      }
+      std::vector<double> ms;
+      const auto timingStart = std::chrono::steady_clock::now();
+      for (int k = 0; k < options.frames; ++k) {
+        renderer.render(camera, settings, width, height);
+        glFinish();
+        ms.push_back(renderer.lastFrameGpuMs());
+        if (options.rowSeconds > 0.0 && ms.size() >= 3 && secondsSince(timingStart) >= options.rowSeconds) break;
+      }
+      MeasuredRow measured;
+      TradeoffRow& row = measured.row;
+      row.method = methodName(v.method);
+      row.setting = v.setting;
+      row.frameMs = median(ms);
+      const auto& tess = renderer.tessellationStatistics();
+      if (fixedLevel)
+        trianglesPerLevelSquared[methodAndMesh] =
+            double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
+      row.triangles = !methodInfo(v.method).bezierPieces() ? renderer.triangleCount()
+                      : v.tessellation == 0                ? tess.patches
+                                                           : tess.trianglesGenerated;
+      if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
+        std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
+        writePng(renderer.readDisplay(), options.outDir + "/" + name);
+      }
+      const LinearImage image = renderer.readLinear();
+      row.image = rowFileStem(row) + ".exr";
+      writeLinearImage(image, options.outDir + "/" + row.image);
+      measured.values = reference.rowValues(image);
+      auto meanAbs = [](const std::vector<float>& jumps) {
+        double sum = 0.0;
+        for (float j : jumps) sum += std::abs(j);
+        return jumps.empty() ? 0.0 : sum / double(jumps.size());
+      };
+      row.machBands = meanAbs(measured.values.smoothJumps);
+      row.c0Kinks = meanAbs(measured.values.c0Jumps);
+      std::fprintf(stderr, "%s %s: %.3g ms (median of %zu)\n", row.method.c_str(), row.setting.c_str(), row.frameMs,
+                   ms.size());
+      rows.push_back(std::move(measured));
     }
-    if (v.relaxed != relaxedLoaded) {
-      renderer.setMesh(v.relaxed ? mesh : unrelaxed);
-      relaxedLoaded = v.relaxed;
-    }
-    gl::RenderSettings settings;
-    settings.method = v.method;
-    settings.tessellation = v.tessellation;
-    settings.tessellationTolerance = v.tolerance / 255.0;
-    settings.exposure = options.exposure;
-    // Two frames first: the pieces are built, and the timer queries (read two frames late)
-    // then time this setting only.
-    for (int k = 0; k < 2; ++k) {
-      renderer.render(camera, settings, width, height);
-      glFinish();
-    }
-    std::vector<double> ms;
-    const auto timingStart = std::chrono::steady_clock::now();
-    for (int k = 0; k < options.frames; ++k) {
-      renderer.render(camera, settings, width, height);
-      glFinish();
-      ms.push_back(renderer.gpuFrameMs());
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - timingStart).count();
-      if (options.rowSeconds > 0.0 && ms.size() >= 3 && seconds >= options.rowSeconds) break;
-    }
-    TradeoffRow row;
-    row.method = methodName(v.method);
-    row.setting = v.setting;
-    row.frameMs = median(ms);
-    const auto& tess = renderer.tessellationStatistics();
-    if (fixedLevel)
-      trianglesPerLevelSquared[methodAndMesh] =
-          double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
-    row.triangles = !methodInfo(v.method).bezierPieces() ? renderer.triangleCount()
-                    : v.tessellation == 0                ? tess.patches
-                                                         : tess.trianglesGenerated;
-    if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
-      std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
-      writePng(renderer.readDisplay(), options.outDir + "/" + name);
-    }
-    LinearImage image = renderer.readLinear();
-    for (size_t p = 0; p < interior.size(); ++p)
-      if (!interior[p]) image.rgba[4 * p + 3] = 0.0f;  // left out of every comparison below
-    const LuminanceError error = luminanceError(image, referenceImage.pixels);
-    row.rmse = error.rmse;
-    row.maxError = error.max;
-    const DisplayDifference shown = displayDifference(image, referenceImage, exposureScale);
-    row.displayRmse = shown.rmse * 255.0;
-    row.displayMax = shown.maxAbs * 255.0;
-    row.machBands = meanGradientJump(image, exposureScale, stencils.smooth);
-    row.c0Kinks = meanGradientJump(image, exposureScale, stencils.c0);
-    std::fprintf(stderr, "%s %s: %.3g ms (median of %zu), display RMSE %.3g steps\n", row.method.c_str(),
-                 row.setting.c_str(), row.frameMs, ms.size(), row.displayRmse);
-    rows.push_back(row);
   }
-  markParetoFront(rows);
 
   std::ostringstream header;
   header << "radview bench " << options.file << ": " << width << "x" << height << ", camera '"
-         << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure
-         << "; reference " << options.spp << " spp final gather (B^ " << options.gatherInterpolant << ", "
-         << gatherSeconds << " s); "
-         << "its own Mach-band measure " << referenceMach << ", C0 kinks " << referenceKinks << " steps/px (noise "
-         << "floor); " << stencils.smooth.size() << " stencils across untagged edges, " << stencils.c0.size()
-         << " across C0 edges. Frame time: GPU timer queries, median of " << options.frames
-         << " frames, or of at least 3 once they take " << options.rowSeconds << " s (--row-seconds).\n";
+         << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure << ".\n";
+  if (truth) {
+    reference.setExact(*truth);
+    writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
+    header << "Reference: " << options.truth << ", exact: every error below is exact, with no interval.\n";
+  } else {
+    GatherSettings gather;
+    gather.interpolant = methodFromName(options.gatherInterpolant);
+    gather.width = width;
+    gather.height = height;
+    gather.camera = camera;
+    gather.runs = options.runs;
+    gather.pixelCentres = true;
+    int spp = 0;
+    double seconds = 0.0;
+    gatherReference(mesh, options, gather, rows, reference, spp, seconds);
+    writeLinearImage(reference.mean(), options.outDir + "/reference.exr");
+    writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
+    header << "Reference: final gather (C&W eq. 9.9, B^ " << options.gatherInterpolant << ") at each pixel's centre, "
+           << spp << " spp in " << options.runs << " independent runs, " << number(seconds) << " s; its noise (RMS, "
+           << "over the compared pixels) " << number(reference.noiseLinear()) << " linear, "
+           << number(reference.noiseSteps()) << " display steps.\n";
+  }
+  for (MeasuredRow& m : rows) {
+    const RowError e = reference.error(m.values);
+    TradeoffRow& row = m.row;
+    row.rmse = e.rmse;
+    row.maxError = e.maxError;
+    row.displayRmse = e.displayRmse;
+    row.displayMax = e.displayMax;
+    row.linearError = e.linear;
+    row.displayError = e.display;
+    row.machError = e.smoothJumps;
+    row.c0KinkError = e.c0Jumps;
+    row.referenceNoiseRmse = reference.noiseLinear();
+    row.referenceNoiseSteps = reference.noiseSteps();
+  }
+  std::vector<TradeoffRow> table;
+  for (const MeasuredRow& m : rows) table.push_back(m.row);
+  markParetoFront(table);
+
+  const ErrorEstimate ownMach = reference.ownJumps(false), ownKinks = reference.ownJumps(true);
+  header << "Errors are the root mean square over " << reference.pixelCount()
+         << " pixels whose four neighbours see the same plane, against what the reference converges to: its noise "
+            "is taken out (renderer/bench/error_estimate.h). [95 %] intervals are over the reference's sampling; "
+            "rows whose intervals overlap are ties. Mach and C0 kink errors: the RMS difference of each row's "
+            "gradient jumps from the reference's, over "
+         << reference.stencilCount(false) << " stencils across untagged edges and " << reference.stencilCount(true)
+         << " across C0 edges; the reference's own RMS jumps (noise taken out) are " << withInterval(ownMach)
+         << " and " << withInterval(ownKinks) << " steps/px. Frame time: GPU timer queries, median of "
+         << options.frames << " frames, or of at least 3 once they take " << options.rowSeconds
+         << " s (--row-seconds). Whole bench: " << number(secondsSince(benchStart)) << " s.\n";
   if (!skipped.empty()) {
     header << "Not measured, their triangles more than " << options.maxTrianglesPerPixel
            << " times the pixels (--max-triangles-per-pixel):";
@@ -245,15 +404,16 @@ int runBench(const BenchOptions& options) {
     header << ".\n";
   }
   header << "\n";
-  const std::string table = markdownTable(rows);
-  writeFileAtomically(options.outDir + "/bench.md", header.str() + table);
-  writeFileAtomically(options.outDir + "/bench.csv", csvTable(rows));
+  const std::string text =
+      header.str() + markdownTable(table) + "\nPer pixel, by error (display steps), with ties:\n\n" + tieReport(table);
+  writeFileAtomically(options.outDir + "/bench.md", text);
+  writeFileAtomically(options.outDir + "/bench.csv", csvTable(table));
   const std::string title = std::filesystem::path(options.file).filename().string() + ", " + options.size;
-  if (!writeTradeoffPlot(rows, title, options.outDir + "/bench.png"))
+  if (!writeTradeoffPlot(table, title, options.outDir + "/bench.png"))
     std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");
-  std::printf("%s%s", header.str().c_str(), table.c_str());
-  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.exr, reference.png and one PNG per method\n",
-              options.outDir.c_str());
+  std::printf("%s", text.c_str());
+  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method and one EXR per row\n",
+              options.outDir.c_str(), truth ? "" : ", reference.exr");
   return 0;
 }
 

@@ -1,6 +1,5 @@
 #include "bench/image_error.h"
 
-#include "core/display_transform.h"
 #include "core/error.h"
 
 #include <algorithm>
@@ -28,25 +27,6 @@ std::vector<char> interiorPixels(const RadiosityMesh& mesh, const std::vector<in
                     samePlane(elementAt[p], elementAt[p - width]) && samePlane(elementAt[p], elementAt[p + width]);
     }
   return interior;
-}
-
-LuminanceError luminanceError(const LinearImage& image, const LinearImage& reference) {
-  RADVIEW_CHECK(image.width == reference.width && image.height == reference.height &&
-                image.rgba.size() == reference.rgba.size());
-  LuminanceError error;
-  double sum = 0.0;
-  for (size_t i = 0; i < image.rgba.size(); i += 4) {
-    const float* a = &image.rgba[i];
-    const float* b = &reference.rgba[i];
-    if (!(a[3] > 0.5f && b[3] > 0.5f)) continue;
-    const double d = luminance(Rgb(a[0], a[1], a[2])) - luminance(Rgb(b[0], b[1], b[2]));
-    if (!std::isfinite(d)) continue;
-    sum += d * d;
-    error.max = std::max(error.max, std::abs(d));
-    ++error.pixels;
-  }
-  error.rmse = error.pixels ? std::sqrt(sum / double(error.pixels)) : 0.0;
-  return error;
 }
 
 double median(std::vector<double> values) {

@@ -7,6 +7,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,33 +17,48 @@ namespace radview {
 
 void markParetoFront(std::vector<TradeoffRow>& rows) {
   for (TradeoffRow& row : rows) {
+    const double error = row.displayError.rms();
     row.pareto = std::none_of(rows.begin(), rows.end(), [&](const TradeoffRow& other) {
-      return other.frameMs <= row.frameMs && other.displayRmse <= row.displayRmse &&
-             (other.frameMs < row.frameMs || other.displayRmse < row.displayRmse);
+      const double otherError = other.displayError.rms();
+      return other.frameMs <= row.frameMs && otherError <= error && (other.frameMs < row.frameMs || otherError < error);
     });
   }
 }
 
-namespace {
-
-std::string number(double v, int digits = 3) {
+std::string number(double v, int digits) {
   char text[32];
   std::snprintf(text, sizeof text, "%.*g", digits, v);
   return text;
 }
 
-}  // namespace
+std::string withInterval(const ErrorEstimate& e) {
+  if (e.standardError == 0.0) return number(e.rms());
+  return number(e.rms()) + " [" + number(e.rmsLow()) + ", " + number(e.rmsHigh()) + "]";
+}
+
+std::string rowFileStem(const TradeoffRow& row) {
+  std::string stem = row.method + "-" + row.setting;
+  std::string out;
+  for (char c : stem) {
+    const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.';
+    if (keep) out += char(std::tolower(static_cast<unsigned char>(c)));
+    else if (!out.empty() && out.back() != '-') out += '-';
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out;
+}
 
 std::string markdownTable(const std::vector<TradeoffRow>& rows) {
   std::ostringstream out;
-  out << "| method | setting | frame ms | triangles | RMSE | max | display RMSE (steps) | display max (steps) "
-         "| Mach bands (steps/px) | C0 kinks (steps/px) |\n"
-         "|---|---|---|---|---|---|---|---|---|---|\n";
+  out << "| method | setting | frame ms | triangles | error, steps [95 %] | error, linear [95 %] | max, steps "
+         "| Mach bands (steps/px) | Mach error [95 %] | C0 kinks (steps/px) | C0 kink error [95 %] |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const TradeoffRow& r : rows) {
     const std::string b = r.pareto ? "**" : "";
     out << "| " << b << r.method << b << " | " << b << r.setting << b << " | " << number(r.frameMs) << " | "
-        << r.triangles << " | " << number(r.rmse) << " | " << number(r.maxError) << " | " << b << number(r.displayRmse)
-        << b << " | " << number(r.displayMax) << " | " << number(r.machBands) << " | " << number(r.c0Kinks) << " |\n";
+        << r.triangles << " | " << b << withInterval(r.displayError) << b << " | " << withInterval(r.linearError)
+        << " | " << number(r.displayMax) << " | " << number(r.machBands) << " | " << withInterval(r.machError) << " | "
+        << number(r.c0Kinks) << " | " << withInterval(r.c0KinkError) << " |\n";
   }
   return out.str();
 }
@@ -50,11 +66,49 @@ std::string markdownTable(const std::vector<TradeoffRow>& rows) {
 std::string csvTable(const std::vector<TradeoffRow>& rows) {
   std::ostringstream out;
   out << "method,setting,frame_ms,triangles,rmse,max,display_rmse_steps,display_max_steps,mach_steps_per_px,"
-         "c0_kink_steps_per_px,pareto\n";
+         "c0_kink_steps_per_px,pareto,rmse_estimate,rmse_ci_low,rmse_ci_high,error_estimate_steps,error_ci_low_steps,"
+         "error_ci_high_steps,reference_noise_rmse,reference_noise_steps,image,mach_error_steps_per_px,"
+         "mach_error_ci_low,mach_error_ci_high,c0_kink_error_steps_per_px,c0_kink_error_ci_low,c0_kink_error_ci_high\n";
+  auto estimate = [&](const ErrorEstimate& e) {
+    return number(e.rms(), 6) + "," + number(e.rmsLow(), 6) + "," + number(e.rmsHigh(), 6);
+  };
   for (const TradeoffRow& r : rows)
     out << r.method << "," << r.setting << "," << number(r.frameMs, 6) << "," << r.triangles << "," << number(r.rmse, 6)
         << "," << number(r.maxError, 6) << "," << number(r.displayRmse, 6) << "," << number(r.displayMax, 6) << ","
-        << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << "," << (r.pareto ? 1 : 0) << "\n";
+        << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << "," << (r.pareto ? 1 : 0) << ","
+        << estimate(r.linearError) << "," << estimate(r.displayError) << "," << number(r.referenceNoiseRmse, 6) << ","
+        << number(r.referenceNoiseSteps, 6) << "," << r.image << "," << estimate(r.machError) << ","
+        << estimate(r.c0KinkError) << "\n";
+  return out.str();
+}
+
+std::string tieReport(const std::vector<TradeoffRow>& rows) {
+  std::vector<const TradeoffRow*> perPixel;
+  for (const TradeoffRow& r : rows)
+    if (r.setting.rfind("per pixel", 0) == 0) perPixel.push_back(&r);
+  std::sort(perPixel.begin(), perPixel.end(),
+            [](auto* a, auto* b) { return a->displayError.rms() < b->displayError.rms(); });
+  auto name = [](const TradeoffRow* r) {
+    return r->setting == "per pixel" ? r->method : r->method + " (" + r->setting.substr(11) + ")";
+  };
+  std::ostringstream out;
+  for (const TradeoffRow* r : perPixel) {
+    std::vector<std::string> ties, better;
+    for (const TradeoffRow* other : perPixel) {
+      if (other == r) continue;
+      if (tie(r->displayError, other->displayError)) ties.push_back(name(other));
+      else if (r->displayError.rms() < other->displayError.rms()) better.push_back(name(other));
+    }
+    out << "- " << name(r) << " " << withInterval(r->displayError) << " steps: ";
+    auto list = [&](const std::vector<std::string>& names) {
+      std::string s;
+      for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
+      return s;
+    };
+    out << (ties.empty() ? "ties with none" : "ties with " + list(ties));
+    if (!better.empty()) out << "; better than " << list(better);
+    out << "\n";
+  }
   return out.str();
 }
 
@@ -67,12 +121,14 @@ bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& 
   IBA::fill(plot, white);
 
   double tMin = INFINITY, tMax = 0.0, eMin = INFINITY, eMax = 0.0;
+  const TradeoffRow* best = nullptr;
   for (const TradeoffRow& r : rows) {
     if (!(r.frameMs > 0.0)) continue;
     tMin = std::min(tMin, r.frameMs);
     tMax = std::max(tMax, r.frameMs);
-    eMin = std::min(eMin, r.displayRmse);
-    eMax = std::max(eMax, r.displayRmse);
+    eMin = std::min(eMin, r.displayError.rmsLow());
+    eMax = std::max(eMax, r.displayError.rmsHigh());
+    if (!best || r.displayError.rms() < best->displayError.rms()) best = &r;
   }
   if (!(eMax > 0.0)) eMin = 0.0, eMax = 1.0;
   if (!(tMax > 0.0)) tMin = 1.0, tMax = 10.0;
@@ -93,6 +149,11 @@ bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& 
                   IBA::TextAlignX ax = IBA::TextAlignX::Left) {
     if (labels) IBA::render_text(plot, x, y, s, size, font, OIIO::cspan<float>(colour, 3), ax);
   };
+  // The best row's interval: a bar that reaches into this band ties with it.
+  const float band[3] = {0.99f, 0.93f, 0.8f};
+  if (best && best->displayError.rmsHigh() > best->displayError.rmsLow())
+    IBA::fill(plot, OIIO::cspan<float>(band, 3),
+              OIIO::ROI(left, W - right, py(best->displayError.rmsHigh()), py(best->displayError.rmsLow()) + 1));
   for (double d = d0; d <= d1; ++d) {
     for (int k = 1; k < 10 && d + std::log10(k) <= d1; ++k)
       IBA::render_line(plot, px(std::pow(10.0, d) * k), top, px(std::pow(10.0, d) * k), H - bottom,
@@ -105,23 +166,31 @@ bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& 
   }
   IBA::render_box(plot, left, top, W - right, H - bottom, OIIO::cspan<float>(black, 3));
   text(W / 2, H - 20, "GPU frame time, ms (log scale)", 17, black, IBA::TextAlignX::Center);
-  text(12, top - 12, "RMSE of displayed luminance against the final gather, 8-bit steps", 17, black);
+  text(12, top - 12, "Error of displayed luminance, 8-bit steps (bars: 95 % intervals; band: the best row's)", 17,
+       black);
   text(W / 2, 26, title, 18, black, IBA::TextAlignX::Center);
 
   std::vector<const TradeoffRow*> front;
   for (const TradeoffRow& r : rows) {
     if (!(r.frameMs > 0.0)) continue;
-    const int x = px(r.frameMs), y = py(r.displayRmse);
-    IBA::render_box(plot, x - 3, y - 3, x + 3, y + 3, OIIO::cspan<float>(r.pareto ? red : blue, 3), true);
+    const int x = px(r.frameMs), y = py(r.displayError.rms());
+    const float* colour = r.pareto ? red : blue;
+    const int low = py(r.displayError.rmsLow()), high = py(r.displayError.rmsHigh());
+    if (low - high >= 2) {
+      IBA::render_line(plot, x, high, x, low, OIIO::cspan<float>(colour, 3));
+      IBA::render_line(plot, x - 4, high, x + 4, high, OIIO::cspan<float>(colour, 3));
+      IBA::render_line(plot, x - 4, low, x + 4, low, OIIO::cspan<float>(colour, 3));
+    }
+    IBA::render_box(plot, x - 3, y - 3, x + 3, y + 3, OIIO::cspan<float>(colour, 3), true);
     if (r.pareto) front.push_back(&r);
   }
   std::sort(front.begin(), front.end(), [](auto* a, auto* b) { return a->frameMs < b->frameMs; });
   for (size_t i = 0; i + 1 < front.size(); ++i)
-    IBA::render_line(plot, px(front[i]->frameMs), py(front[i]->displayRmse), px(front[i + 1]->frameMs),
-                     py(front[i + 1]->displayRmse), OIIO::cspan<float>(red, 3));
+    IBA::render_line(plot, px(front[i]->frameMs), py(front[i]->displayError.rms()), px(front[i + 1]->frameMs),
+                     py(front[i + 1]->displayError.rms()), OIIO::cspan<float>(red, 3));
   // Labels stagger upwards, so neighbours on the front do not overwrite each other.
   for (size_t i = 0; i < front.size(); ++i)
-    text(px(front[i]->frameMs) + 7, py(front[i]->displayRmse) - 6 - 15 * int(i % 4),
+    text(px(front[i]->frameMs) + 7, py(front[i]->displayError.rms()) - 6 - 15 * int(i % 4),
          front[i]->method + " " + front[i]->setting, 13, red);
 
   Image rgba{W, H, std::vector<uint8_t>(size_t(W) * H * 4, 255)};

@@ -93,6 +93,9 @@ inline constexpr int kMaxImageSide = 16384;
 // rays, hours on a CPU. Its error falls at least as 1/sqrt(spp) (faster where the integrand is
 // smooth: the passes are stratified, gather_sequence.h), so more would not be seen on 8 bits.
 inline constexpr int kMaxGatherSpp = 65536;
+// Independent runs of the final gather (bench --runs): each keeps an image of sums, so memory
+// grows with them (64 x 32 bytes a pixel); the error estimate's interval needs no more.
+inline constexpr int kMaxGatherRuns = 64;
 // Final-gather shadow rays per pixel per pass (--emitter-samples): time, linearly.
 inline constexpr int kMaxEmitterSamples = 1024;
 // Solver samples per shooter and node (solve --samples): time, linearly; the form factor's

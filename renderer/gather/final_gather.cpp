@@ -1,6 +1,7 @@
 #include "gather/final_gather.h"
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/parallel_for.h"
 #include "gather/hemisphere_sampling.h"
 #include "gather/visible_elements.h"
@@ -21,6 +22,9 @@ GatherSettings checked(const GatherSettings& settings) {
                 std::to_string(settings.height) + " is empty");
   if (settings.emitterSamples < 1)
     throw Error("final gather: " + std::to_string(settings.emitterSamples) + " emitter samples: expected 1 or more");
+  if (settings.runs < 1 || settings.runs > kMaxGatherRuns)
+    throw Error("final gather: " + std::to_string(settings.runs) + " runs: expected 1 to " +
+                std::to_string(kMaxGatherRuns));
   return settings;
 }
 
@@ -32,7 +36,8 @@ bool operator==(const GatherSettings& a, const GatherSettings& b) {
   return a.interpolant == b.interpolant && ia.diagonal == ib.diagonal && ia.cloughTocher == ib.cloughTocher &&
          ia.useStoredGradients == ib.useStoredGradients && a.seed == b.seed && a.width == b.width &&
          a.height == b.height && ca.eye == cb.eye && ca.target == cb.target && ca.up == cb.up && ca.yfov == cb.yfov &&
-         ca.zNear == cb.zNear && ca.zFar == cb.zFar && a.emitterSamples == b.emitterSamples;
+         ca.zNear == cb.zNear && ca.zFar == cb.zFar && a.emitterSamples == b.emitterSamples && a.runs == b.runs &&
+         a.pixelCentres == b.pixelCentres;
 }
 
 FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings)
@@ -43,7 +48,7 @@ FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settin
       emitters_(mesh),
       cameraRays_(settings.camera, settings.width, settings.height),
       sequence_(kEmitterDimension + 3 * settings_.emitterSamples),
-      sum_(size_t(settings.width) * size_t(settings.height) * 4, 0.0),
+      sum_(size_t(settings_.runs) * size_t(settings.width) * size_t(settings.height) * 4, 0.0),
       pass_(size_t(settings.width) * size_t(settings.height)) {
   normals_.reserve(mesh.elements.size());
   for (size_t e = 0; e < mesh.elements.size(); ++e) normals_.push_back(mesh.elementNormal(e));
@@ -84,16 +89,20 @@ Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const GatherSequenc
 }
 
 PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
-  return sample(x, y, pass, sequence_.point(uint32_t(pass)));
+  return sample(x, y, pass, sequence_.point(uint32_t(pass / settings_.runs)));
 }
 
 PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32_t>& point) const {
   const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
-  const GatherSequence::PixelPoint u(point, settings_.seed, pixel, uint32_t(pass));
+  const uint32_t run = uint32_t(pass % settings_.runs), passOfRun = uint32_t(pass / settings_.runs);
+  const GatherSequence::PixelPoint u(point, settings_.seed, pixel, passOfRun, run);
   PixelSample result;
-  ++result.rays;
+  if (!settings_.pixelCentres || centreHits_.empty()) ++result.rays;  // the eye ray
+  // At pixel centres every pass sees the same point: its hit is cast once (centreHits_).
   const std::optional<RayHit> seen =
-      caster_->closestHit(cameraRays_.through(x + u(kPixelDimension), y + u(kPixelDimension + 1)));
+      settings_.pixelCentres
+          ? centreHit(x, y)
+          : caster_->closestHit(cameraRays_.through(x + u(kPixelDimension), y + u(kPixelDimension + 1)));
   if (!seen) return result;
   result.covered = true;
   const uint32_t element = uint32_t(seen->polygon);
@@ -109,11 +118,29 @@ PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32
   return result;
 }
 
+std::optional<RayHit> FinalGather::centreHit(int x, int y) const {
+  const size_t pixel = size_t(y) * size_t(settings_.width) + size_t(x);
+  if (!centreHits_.empty()) return centreHits_[pixel];
+  return caster_->closestHit(cameraRays_.through(x + 0.5, y + 0.5));
+}
+
 int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
   auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
   const int width = settings_.width;
+  if (settings_.pixelCentres && centreHits_.empty() && passes > 0) {
+    std::vector<std::optional<RayHit>> hits(pass_.size());
+    parallelFor(
+        size_t(settings_.height),
+        [&](size_t y) {
+          for (int x = 0; x < width; ++x)
+            hits[y * size_t(width) + size_t(x)] = caster_->closestHit(cameraRays_.through(x + 0.5, y + 0.5));
+        },
+        1);
+    centreHits_ = std::move(hits);
+  }
   for (int p = 0; p < passes; ++p) {
-    const std::vector<uint32_t> point = sequence_.point(uint32_t(passes_));
+    const std::vector<uint32_t> point = sequence_.point(uint32_t(passes_ / settings_.runs));
+    double* sum = &sum_[size_t(passes_ % settings_.runs) * pass_.size() * 4];
     parallelFor(
         size_t(settings_.height),
         [&](size_t y) {
@@ -125,10 +152,10 @@ int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
     // Added in pixel order after the pass, so the sums do not depend on the threads either.
     for (size_t i = 0; i < pass_.size(); ++i) {
       if (pass_[i].covered) {
-        sum_[4 * i + 0] += pass_[i].B.r;
-        sum_[4 * i + 1] += pass_[i].B.g;
-        sum_[4 * i + 2] += pass_[i].B.b;
-        sum_[4 * i + 3] += 1.0;
+        sum[4 * i + 0] += pass_[i].B.r;
+        sum[4 * i + 1] += pass_[i].B.g;
+        sum[4 * i + 2] += pass_[i].B.b;
+        sum[4 * i + 3] += 1.0;
       }
       rays_ += pass_[i].rays;
     }
@@ -137,16 +164,37 @@ int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
   return passes;
 }
 
-LinearImage FinalGather::image() const {
-  LinearImage image{settings_.width, settings_.height, std::vector<float>(sum_.size(), 0.0f)};
-  if (passes_ == 0) return image;
-  for (size_t i = 0; i < sum_.size() / 4; ++i) {
-    const double covered = sum_[4 * i + 3];
-    if (covered == 0.0) continue;
-    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = float(sum_[4 * i + size_t(c)] / covered);
-    image.rgba[4 * i + 3] = float(covered / passes_);
+int FinalGather::passesOfRun(int run) const {
+  return passes_ / settings_.runs + (run < passes_ % settings_.runs ? 1 : 0);
+}
+
+namespace {
+
+// The mean of `runs` runs' sums (final_gather.h's sum_) over `passes` passes in all.
+LinearImage meanOfRuns(const double* sums, int runs, size_t pixels, int passes, int width, int height) {
+  LinearImage image{width, height, std::vector<float>(pixels * 4, 0.0f)};
+  if (passes == 0) return image;
+  for (size_t i = 0; i < pixels; ++i) {
+    double total[4] = {0.0, 0.0, 0.0, 0.0};
+    for (int r = 0; r < runs; ++r)
+      for (int c = 0; c < 4; ++c) total[c] += sums[(size_t(r) * pixels + i) * 4 + size_t(c)];
+    if (total[3] == 0.0) continue;
+    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = float(total[c] / total[3]);
+    image.rgba[4 * i + 3] = float(total[3] / passes);
   }
   return image;
+}
+
+}  // namespace
+
+LinearImage FinalGather::image() const {
+  return meanOfRuns(sum_.data(), settings_.runs, pass_.size(), passes_, settings_.width, settings_.height);
+}
+
+LinearImage FinalGather::runImage(int run) const {
+  RADVIEW_CHECK(run >= 0 && run < settings_.runs);
+  return meanOfRuns(&sum_[size_t(run) * pass_.size() * 4], 1, pass_.size(), passesOfRun(run), settings_.width,
+                    settings_.height);
 }
 
 }  // namespace radview

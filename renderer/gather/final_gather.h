@@ -9,7 +9,7 @@
 //
 // The estimator, per pixel and pass (one sample per pixel per pass):
 //  - the eye ray through a uniformly jittered point of the pixel (so the mean antialiases;
-//    alpha is the fraction of samples that see a surface);
+//    alpha is the fraction of samples that see a surface), or through its centre;
 //  - direct light: emitterSamples points on the emitters (EmitterSampler, by power, one-sided),
 //    E_e cos(theta_p) cos(theta_e) / (pi r^2) V / pdf each;
 //  - indirect light: one cosine-weighted direction, contributing B^(x') - E(x') at the surface
@@ -57,6 +57,12 @@ struct GatherSettings {
   int width = 256, height = 256;
   Camera camera;
   int emitterSamples = 1;  // shadow rays per pixel per pass
+  // Independent runs of the estimator, each with sample sequences of its own: pass p belongs to
+  // run p mod runs. Their spread estimates the image's noise (bench/error_estimate.h).
+  int runs = 1;
+  // Every sample through the pixel's centre, where the GL renderer evaluates a method, instead
+  // of a point jittered over the pixel (which antialiases silhouettes): the bench's reference.
+  bool pixelCentres = false;
 };
 // Equal settings make the same image (of the same mesh): every field, the camera's included.
 bool operator==(const GatherSettings& a, const GatherSettings& b);
@@ -87,6 +93,10 @@ class FinalGather {
   // The mean so far: RGB the mean B over the samples that saw a surface (not premultiplied, as
   // the GL renderer's linear image), alpha the fraction of samples that saw one. Row 0 is the top.
   LinearImage image() const;
+  // The same over the passes of one run (0 .. settings().runs - 1).
+  LinearImage runImage(int run) const;
+  // The passes each run has had: whole rounds when samplesPerPixel() is a multiple of runs.
+  int passesOfRun(int run) const;
 
   // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
   PixelSample samplePixel(int x, int y, int pass) const;
@@ -94,6 +104,8 @@ class FinalGather {
  private:
   // samplePixel with the pass's point formed (GatherSequence::point), as addPasses forms it once.
   PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const;
+  // What pixel (x, y)'s centre sees: cast once, at the first pass (pixelCentres).
+  std::optional<RayHit> centreHit(int x, int y) const;
   Rgb directLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
   Rgb indirectLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
 
@@ -105,8 +117,10 @@ class FinalGather {
   EmitterSampler emitters_;
   CameraRays cameraRays_;
   GatherSequence sequence_;
-  std::vector<double> sum_;  // per pixel: sum of B over covered samples (RGB), covered count
+  // Per run, per pixel: sum of B over covered samples (RGB), covered count.
+  std::vector<double> sum_;
   std::vector<PixelSample> pass_;
+  std::vector<std::optional<RayHit>> centreHits_;  // per pixel, with pixelCentres
   int passes_ = 0;
   uint64_t rays_ = 0;
 };

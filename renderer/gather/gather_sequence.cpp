@@ -36,7 +36,8 @@ std::vector<uint32_t> GatherSequence::point(uint32_t pass) const {
 }
 
 GatherSequence::PixelPoint::PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel,
-                                       uint32_t pass)
-    : words_(point.data()), shifts_(SampleStream::forKey(seed, pixel, uint64_t(pass >> kIndexBits))) {}
+                                       uint32_t pass, uint32_t run)
+    : words_(point.data()),
+      shifts_(SampleStream::forKey(seed, pixel, uint64_t(run) << 32 | uint64_t(pass >> kIndexBits))) {}
 
 }  // namespace radview

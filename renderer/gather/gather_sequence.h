@@ -24,11 +24,12 @@ class GatherSequence {
   // pixel, so a pass forms it once. Passes 2^16 apart take the same point (under other shifts).
   std::vector<uint32_t> point(uint32_t pass) const;
 
-  // One pixel's coordinates of a pass's point, for gather `seed`.
+  // One pixel's coordinates of a pass's point, for gather `seed` and its independent run `run`
+  // (each run shifts the same points by words of its own, so runs are independent estimates).
   class PixelPoint {
    public:
     // `point` (GatherSequence::point(pass)) must outlive this.
-    PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel, uint32_t pass);
+    PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel, uint32_t pass, uint32_t run = 0);
     double operator()(int dimension) const {  // in [0, 1)
       return double(words_[dimension] ^ uint32_t(shifts_.at(uint64_t(dimension)) >> 32)) * 0x1.0p-32;
     }

@@ -447,6 +447,13 @@ void MeshRenderer::beginTimer() {
   glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
 }
 
+double MeshRenderer::lastFrameGpuMs() const {
+  if (frame_ == 0) throw Error("the GPU frame time was asked for before any frame was rendered");
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(timerQueries_[(frame_ - 1) % 2], GL_QUERY_RESULT, &ns);
+  return double(ns) * 1e-6;
+}
+
 void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camera& camera,
                                      const glm::mat4& clipFromWorld, int width, int height, bool compareMethod) {
   // Pass 1: linear radiosity and depth; for a difference view against another method, that

@@ -120,7 +120,11 @@ class MeshRenderer {
   // (the viewer frames the scene beside its panel), at width x height framebuffer pixels.
   void presentToDefaultFramebuffer(int left, int width, int height) const;
   // GPU time of the most recent render() whose timer query is ready, in ms (0 until one is).
+  // It never waits: the viewer's figure, two frames late.
   double gpuFrameMs() const { return gpuFrameMs_; }
+  // GPU time of the last render(), in ms, waiting for it to finish if need be: what a benchmark
+  // times, frame by frame. Throws Error before the first render.
+  double lastFrameGpuMs() const;
   size_t triangleCount() const { return triangleVertices_ / 3; }
   // The Bezier pieces of the last quadratic or C1 frame: patches, draws, levels, triangles (for
   // the C1 methods per pixel: the element triangles of the deferred pass, at level 1).

@@ -1,10 +1,7 @@
-// The bench's error measure: interior pixels and the luminance error on them.
+// The pixels the bench compares, and the median of its frame times.
 #include "bench/image_error.h"
 
 #include <gtest/gtest.h>
-
-#include <cmath>
-#include <limits>
 
 namespace radview {
 namespace {
@@ -35,17 +32,6 @@ TEST(ImageError, InteriorPixelsSeeOnePlaneWithTheirFourNeighbours) {
   // Only (1, 1) has its four neighbours on its plane: (2, 1) borders element 1, row 2 the
   // uncovered row, the rest is the border.
   EXPECT_EQ(rows, "...../.#.../...../...../");
-}
-
-TEST(ImageError, LuminanceErrorOverPixelsBothCover) {
-  LinearImage image{3, 1, {1, 1, 1, 1, 0.5f, 0.5f, 0.5f, 1, 7, 7, 7, 0}};
-  const LinearImage reference{3, 1, {1, 1, 1, 1, 0.25f, 0.25f, 0.25f, 1, 0, 0, 0, 1}};
-  const LuminanceError e = luminanceError(image, reference);
-  EXPECT_EQ(e.pixels, 2u) << "the third is uncovered in the image";
-  EXPECT_NEAR(e.max, 0.25, 1e-7);
-  EXPECT_NEAR(e.rmse, std::sqrt(0.25 * 0.25 / 2), 1e-7);
-  image.rgba[4] = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_EQ(luminanceError(image, reference).pixels, 1u) << "a non-finite pixel is left out";
 }
 
 TEST(ImageError, Median) {
