@@ -6,6 +6,7 @@
 #include "app/viewed_file.h"
 #include "bench/bench_reference.h"
 #include "bench/bench_variants.h"
+#include "bench/error_map.h"
 #include "bench/image_error.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
@@ -87,6 +88,9 @@ void showProgress(double fraction, const std::string& detail, double secondsLeft
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// The ends of the error maps' diverging scale, display steps.
+constexpr double kErrorMapSteps = 10.0;
 
 // A row rendered: what the table reports of it, and its values for the error estimates.
 struct MeasuredRow {
@@ -382,6 +386,13 @@ int runBench(const BenchOptions& options) {
     row.referenceNoiseRmse = reference.noiseLinear();
     row.referenceNoiseSteps = reference.noiseSteps();
   }
+  // Where each row loses: its difference from the reference, read back from its own file.
+  for (const MeasuredRow& m : rows) {
+    const LinearImage image = readReferenceImage(options.outDir + "/" + m.row.image).pixels;
+    const std::string stem = options.outDir + "/" + rowFileStem(m.row) + "-error";
+    writeLinearImage(signedDifference(image, reference.mean(), reference.pixels()), stem + ".exr");
+    writePng(differenceMap(image, reference.mean(), reference.pixels(), exposureScale, kErrorMapSteps), stem + ".png");
+  }
   std::vector<TradeoffRow> table;
   for (const MeasuredRow& m : rows) table.push_back(m.row);
   markParetoFront(table);
@@ -396,7 +407,9 @@ int runBench(const BenchOptions& options) {
          << " across C0 edges; the reference's own RMS jumps (noise taken out) are " << withInterval(ownMach)
          << " and " << withInterval(ownKinks) << " steps/px. Frame time: GPU timer queries, median of "
          << options.frames << " frames, or of at least 3 once they take " << options.rowSeconds
-         << " s (--row-seconds). Whole bench: " << number(secondsSince(benchStart)) << " s.\n";
+         << " s (--row-seconds). Error maps (*-error.png): row minus reference in displayed luminance, blue -"
+         << kErrorMapSteps << " to red +" << kErrorMapSteps << " steps; *-error.exr the same in linear RGB. Whole bench: "
+         << number(secondsSince(benchStart)) << " s.\n";
   if (!skipped.empty()) {
     header << "Not measured, their triangles more than " << options.maxTrianglesPerPixel
            << " times the pixels (--max-triangles-per-pixel):";
@@ -412,7 +425,7 @@ int runBench(const BenchOptions& options) {
   if (!writeTradeoffPlot(table, title, options.outDir + "/bench.png"))
     std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");
   std::printf("%s", text.c_str());
-  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method and one EXR per row\n",
+  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method, one EXR per row and its error map\n",
               options.outDir.c_str(), truth ? "" : ", reference.exr");
   return 0;
 }

@@ -64,6 +64,7 @@ class BenchReference {
 
   int runs() const { return K_; }  // 1 for an exact reference
   const LinearImage& mean() const { return mean_; }
+  const std::vector<uint32_t>& pixels() const { return pixels_; }  // the compared ones
   size_t pixelCount() const { return pixels_.size(); }
   size_t stencilCount(bool c0) const { return (c0 ? c0_ : smooth_).size(); }
 
