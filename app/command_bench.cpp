@@ -7,6 +7,7 @@
 #include "bench/bench_reference.h"
 #include "bench/bench_variants.h"
 #include "bench/error_map.h"
+#include "bench/nodal_reference.h"
 #include "bench/image_error.h"
 #include "bench/mach_bands.h"
 #include "bench/tradeoff.h"
@@ -94,9 +95,32 @@ constexpr double kErrorMapSteps = 10.0;
 
 // A row rendered: what the table reports of it, and its values for the error estimates.
 struct MeasuredRow {
+  BenchVariant variant;
   TradeoffRow row;
   RowValues values;
+  std::vector<RowValues> fromNodes;  // per pixel: its method drawing each run of the nodal reference
 };
+
+// The per-pixel rows drawn again from each run of the nodal reference (bench/nodal_reference.h):
+// the values their error splits on.
+void splitErrors(gl::MeshRenderer& renderer, const Camera& camera, double exposureScale, int width, int height,
+                 const RadiosityMesh& relaxed, const RadiosityMesh& unrelaxed, const NodalReference& nodal,
+                 const BenchReference& reference, std::vector<MeasuredRow>& rows) {
+  for (int k = 0; k < nodal.runs; ++k)
+    for (bool isRelaxed : {true, false}) {
+      bool loaded = false;
+      for (MeasuredRow& m : rows) {
+        if (m.variant.tessellation != 0 || m.variant.relaxed != isRelaxed) continue;
+        if (!loaded) renderer.setMesh(nodal.withRun(isRelaxed ? relaxed : unrelaxed, k));
+        loaded = true;
+        gl::RenderSettings settings;
+        settings.method = m.variant.method;
+        settings.exposure = std::log2(exposureScale);
+        renderer.render(camera, settings, width, height);
+        m.fromNodes.push_back(reference.rowValues(renderer.readLinear()));
+      }
+    }
+}
 
 // The widest 95 % interval of the rows' display errors, half of it, in steps.
 double widestHalfInterval(const std::vector<MeasuredRow>& rows, const BenchReference& reference) {
@@ -110,11 +134,10 @@ double widestHalfInterval(const std::vector<MeasuredRow>& rows, const BenchRefer
 
 // The final gather at pixel centres in `runs` independent runs, until `spp` samples per pixel
 // and then, with `precision` > 0, until every row's interval is that narrow (or `maxSeconds`).
-void gatherReference(const RadiosityMesh& mesh, const BenchOptions& options, const GatherSettings& settings,
-                     const std::vector<MeasuredRow>& rows, BenchReference& reference, int& spp, double& seconds) {
+void gatherReference(FinalGather& gather, const BenchOptions& options, const std::vector<MeasuredRow>& rows,
+                     BenchReference& reference, int& spp, double& seconds) {
   const auto start = std::chrono::steady_clock::now();
-  FinalGather gather(mesh, settings);
-  const int runs = settings.runs;
+  const int runs = gather.settings().runs;
   const int target = (options.spp + runs - 1) / runs * runs;
   auto runImages = [&] {
     std::vector<LinearImage> images;
@@ -180,6 +203,12 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
                    "Add reference passes until every row's 95 % interval is narrower than twice this (display "
                    "steps), or --max-seconds; 0: --spp only")
       ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  command
+      ->add_option("--node-spp", o.nodeSpp,
+                   "Samples per node of the reference at the mesh's nodes, which splits each per-pixel row's error "
+                   "into the solution's part and the reconstruction's; 0: no split")
+      ->check(CLI::Range(0, kMaxGatherSpp))
       ->capture_default_str();
   command->add_option("--max-seconds", o.maxSeconds, "With --precision: stop adding passes after this long; 0: no limit")
       ->check(CLI::Range(0.0, 1e9))
@@ -271,9 +300,9 @@ int runBench(const BenchOptions& options) {
 
   std::vector<MeasuredRow> rows;
   std::vector<std::string> skipped;
+  gl::EglContext context;
+  gl::MeshRenderer renderer;
   {
-    gl::EglContext context;
-    gl::MeshRenderer renderer;
     bool relaxedLoaded = true;
     renderer.setMesh(mesh);
     // Per method and mesh: the triangles of a frame at a fixed level L over L^2, measured at the
@@ -315,6 +344,7 @@ int runBench(const BenchOptions& options) {
         if (options.rowSeconds > 0.0 && ms.size() >= 3 && secondsSince(timingStart) >= options.rowSeconds) break;
       }
       MeasuredRow measured;
+      measured.variant = v;
       TradeoffRow& row = measured.row;
       row.method = methodName(v.method);
       row.setting = v.setting;
@@ -364,13 +394,25 @@ int runBench(const BenchOptions& options) {
     gather.pixelCentres = true;
     int spp = 0;
     double seconds = 0.0;
-    gatherReference(mesh, options, gather, rows, reference, spp, seconds);
+    FinalGather finalGather(mesh, gather);
+    gatherReference(finalGather, options, rows, reference, spp, seconds);
     writeLinearImage(reference.mean(), options.outDir + "/reference.exr");
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
     header << "Reference: final gather (C&W eq. 9.9, B^ " << options.gatherInterpolant << ") at each pixel's centre, "
            << spp << " spp in " << options.runs << " independent runs, " << number(seconds) << " s; its noise (RMS, "
            << "over the compared pixels) " << number(reference.noiseLinear()) << " linear, "
            << number(reference.noiseSteps()) << " display steps.\n";
+    if (options.nodeSpp > 0) {
+      const auto start = std::chrono::steady_clock::now();
+      const int perRun = (options.nodeSpp + options.runs - 1) / options.runs;
+      std::fprintf(stderr, "the reference at %zu nodes, %d spp\n", mesh.nodes.size(), perRun * options.runs);
+      const NodalReference nodal = gatherAtNodes(mesh, finalGather, perRun);
+      splitErrors(renderer, camera, exposureScale, width, height, mesh, unrelaxed, nodal, reference, rows);
+      header << "Where the error lives: eq. 9.9 at each of the " << mesh.nodes.size() << " nodes, "
+             << perRun * options.runs << " spp in the same runs, " << number(secondsSince(start))
+             << " s with the per-pixel rows drawn from those values; the solution's part is the row against its "
+                "method drawing them, the reconstruction's part that drawing against the reference image.\n";
+    }
   }
   for (MeasuredRow& m : rows) {
     const RowError e = reference.error(m.values);
@@ -385,6 +427,13 @@ int runBench(const BenchOptions& options) {
     row.c0KinkError = e.c0Jumps;
     row.referenceNoiseRmse = reference.noiseLinear();
     row.referenceNoiseSteps = reference.noiseSteps();
+    if (!m.fromNodes.empty()) {
+      const ErrorSplit split = reference.split(m.values, m.fromNodes);
+      row.solutionPart = split.solution;
+      row.reconstructionPart = split.reconstruction;
+      row.nodeNoiseSteps = split.nodeNoiseSteps;
+      row.split = true;
+    }
   }
   // Where each row loses: its difference from the reference, read back from its own file.
   for (const MeasuredRow& m : rows) {
@@ -417,8 +466,10 @@ int runBench(const BenchOptions& options) {
     header << ".\n";
   }
   header << "\n";
-  const std::string text =
+  std::string text =
       header.str() + markdownTable(table) + "\nPer pixel, by error (display steps), with ties:\n\n" + tieReport(table);
+  const std::string where = splitReport(table);
+  if (!where.empty()) text += "\nWhere the error lives (display steps; intervals over the runs):\n\n" + where;
   writeFileAtomically(options.outDir + "/bench.md", text);
   writeFileAtomically(options.outDir + "/bench.csv", csvTable(table));
   const std::string title = std::filesystem::path(options.file).filename().string() + ", " + options.size;

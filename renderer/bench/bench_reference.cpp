@@ -172,6 +172,28 @@ RowError BenchReference::error(const RowValues& row) const {
   return e;
 }
 
+ErrorSplit BenchReference::split(const RowValues& row, const std::vector<RowValues>& fromNodes) const {
+  if (int(fromNodes.size()) != K_ || K_ < 3)
+    throw Error("bench: the error split needs the row drawn from each of the reference's " + std::to_string(K_) +
+                " runs (it has " + std::to_string(fromNodes.size()) + "), and 3 runs or more");
+  const size_t n = pixels_.size();
+  std::vector<double> displayOfRow(row.display.begin(), row.display.end()), drawn(n * size_t(K_)),
+      reconstruction(n * size_t(K_)), zeros(n, 0.0);
+  for (size_t i = 0; i < n; ++i)
+    for (int k = 0; k < K_; ++k) {
+      const size_t at = i * size_t(K_) + size_t(k);
+      drawn[at] = fromNodes[size_t(k)].display[i];
+      // 0 - (y_k - drawn_k): run k's difference, drawn from nodes minus the reference image,
+      // each run's nodes and pixels independent of the others'.
+      reconstruction[at] = display_[at] - drawn[at];
+    }
+  ErrorSplit split;
+  split.solution = estimateMeanSquaredError(displayOfRow, drawn, K_);
+  split.reconstruction = estimateMeanSquaredError(zeros, reconstruction, K_);
+  split.nodeNoiseSteps = std::sqrt(meanNoiseVariance(drawn, K_));
+  return split;
+}
+
 ErrorEstimate BenchReference::ownJumps(bool c0) const {
   const std::vector<double>& passes = c0 ? c0Jumps_ : smoothJumps_;
   return estimateMeanSquaredError(zeros(passes.size() / size_t(std::max(K_, 1))), passes, K_);

@@ -37,6 +37,16 @@ struct RowError {
   double rmse = 0.0, maxError = 0.0, displayRmse = 0.0, displayMax = 0.0;
 };
 
+// A row's display error split in two (bench/nodal_reference.h), each against what the
+// reference converges to, with 95 % intervals. The nodes' noise reaches every pixel an element
+// covers, so those pixels are not quite independent, as the intervals take them to be:
+// `nodeNoiseSteps` says how much of the noise that is, beside the reference image's own.
+struct ErrorSplit {
+  ErrorEstimate solution;        // the row against the same method drawing the reference's nodal values
+  ErrorEstimate reconstruction;  // the method drawing the reference's nodal values, against the reference
+  double nodeNoiseSteps = 0.0;   // RMS over the pixels of the drawn values' noise (their runs' mean)
+};
+
 class BenchReference {
  public:
   // `pixels`: the indices of the compared pixels; `smooth` and `c0`: the stencils across untagged
@@ -53,6 +63,9 @@ class BenchReference {
   // A row's values from its linear render (the reference's size).
   RowValues rowValues(const LinearImage& row) const;
   RowError error(const RowValues& row) const;
+
+  // `fromNodes[k]`: the row's method drawing the nodal reference's run k (one per run).
+  ErrorSplit split(const RowValues& row, const std::vector<RowValues>& fromNodes) const;
 
   // The reference's own gradient jumps (their root mean square, noise taken out), the
   // measure of Mach bands and kinks that the rows' are compared with.

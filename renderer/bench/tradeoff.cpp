@@ -33,7 +33,10 @@ std::string number(double v, int digits) {
 
 std::string withInterval(const ErrorEstimate& e) {
   if (e.standardError == 0.0) return number(e.rms());
-  return number(e.rms()) + " [" + number(e.rmsLow()) + ", " + number(e.rmsHigh()) + "]";
+  // Enough digits that the interval's width shows to two of them.
+  const double width = e.rmsHigh() - e.rmsLow(), magnitude = std::max(e.rmsHigh(), 1e-300);
+  const int digits = width > 0.0 ? std::clamp(int(std::ceil(std::log10(magnitude / width))) + 2, 3, 8) : 3;
+  return number(e.rms(), digits) + " [" + number(e.rmsLow(), digits) + ", " + number(e.rmsHigh(), digits) + "]";
 }
 
 std::string rowFileStem(const TradeoffRow& row) {
@@ -68,7 +71,9 @@ std::string csvTable(const std::vector<TradeoffRow>& rows) {
   out << "method,setting,frame_ms,triangles,rmse,max,display_rmse_steps,display_max_steps,mach_steps_per_px,"
          "c0_kink_steps_per_px,pareto,rmse_estimate,rmse_ci_low,rmse_ci_high,error_estimate_steps,error_ci_low_steps,"
          "error_ci_high_steps,reference_noise_rmse,reference_noise_steps,image,mach_error_steps_per_px,"
-         "mach_error_ci_low,mach_error_ci_high,c0_kink_error_steps_per_px,c0_kink_error_ci_low,c0_kink_error_ci_high\n";
+         "mach_error_ci_low,mach_error_ci_high,c0_kink_error_steps_per_px,c0_kink_error_ci_low,c0_kink_error_ci_high,"
+         "solution_error_steps,solution_ci_low_steps,solution_ci_high_steps,reconstruction_error_steps,"
+         "reconstruction_ci_low_steps,reconstruction_ci_high_steps\n";
   auto estimate = [&](const ErrorEstimate& e) {
     return number(e.rms(), 6) + "," + number(e.rmsLow(), 6) + "," + number(e.rmsHigh(), 6);
   };
@@ -78,16 +83,20 @@ std::string csvTable(const std::vector<TradeoffRow>& rows) {
         << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << "," << (r.pareto ? 1 : 0) << ","
         << estimate(r.linearError) << "," << estimate(r.displayError) << "," << number(r.referenceNoiseRmse, 6) << ","
         << number(r.referenceNoiseSteps, 6) << "," << r.image << "," << estimate(r.machError) << ","
-        << estimate(r.c0KinkError) << "\n";
+        << estimate(r.c0KinkError) << "," << (r.split ? estimate(r.solutionPart) : ",,") << ","
+        << (r.split ? estimate(r.reconstructionPart) : ",,") << "\n";
   return out.str();
 }
 
-std::string tieReport(const std::vector<TradeoffRow>& rows) {
+namespace {
+
+// tieReport over the estimate `of` picks from each per-pixel row.
+template <class Of>
+std::string ties(const std::vector<TradeoffRow>& rows, Of of) {
   std::vector<const TradeoffRow*> perPixel;
   for (const TradeoffRow& r : rows)
     if (r.setting.rfind("per pixel", 0) == 0) perPixel.push_back(&r);
-  std::sort(perPixel.begin(), perPixel.end(),
-            [](auto* a, auto* b) { return a->displayError.rms() < b->displayError.rms(); });
+  std::sort(perPixel.begin(), perPixel.end(), [&](auto* a, auto* b) { return of(*a).rms() < of(*b).rms(); });
   auto name = [](const TradeoffRow* r) {
     return r->setting == "per pixel" ? r->method : r->method + " (" + r->setting.substr(11) + ")";
   };
@@ -96,10 +105,10 @@ std::string tieReport(const std::vector<TradeoffRow>& rows) {
     std::vector<std::string> ties, better;
     for (const TradeoffRow* other : perPixel) {
       if (other == r) continue;
-      if (tie(r->displayError, other->displayError)) ties.push_back(name(other));
-      else if (r->displayError.rms() < other->displayError.rms()) better.push_back(name(other));
+      if (tie(of(*r), of(*other))) ties.push_back(name(other));
+      else if (of(*r).rms() < of(*other).rms()) better.push_back(name(other));
     }
-    out << "- " << name(r) << " " << withInterval(r->displayError) << " steps: ";
+    out << "- " << name(r) << " " << withInterval(of(*r)) << " steps: ";
     auto list = [&](const std::vector<std::string>& names) {
       std::string s;
       for (size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + names[i];
@@ -109,6 +118,29 @@ std::string tieReport(const std::vector<TradeoffRow>& rows) {
     if (!better.empty()) out << "; better than " << list(better);
     out << "\n";
   }
+  return out.str();
+}
+
+}  // namespace
+
+std::string tieReport(const std::vector<TradeoffRow>& rows) {
+  return ties(rows, [](const TradeoffRow& r) -> const ErrorEstimate& { return r.displayError; });
+}
+
+std::string splitReport(const std::vector<TradeoffRow>& rows) {
+  std::vector<TradeoffRow> split;
+  for (const TradeoffRow& r : rows)
+    if (r.split) split.push_back(r);
+  if (split.empty()) return "";
+  std::ostringstream out;
+  out << "| method | setting | error, steps [95 %] | the solution's part | the reconstruction's part | nodes' noise |\n"
+         "|---|---|---|---|---|---|\n";
+  for (const TradeoffRow& r : split)
+    out << "| " << r.method << " | " << r.setting << " | " << withInterval(r.displayError) << " | "
+        << withInterval(r.solutionPart) << " | " << withInterval(r.reconstructionPart) << " | "
+        << number(r.nodeNoiseSteps) << " |\n";
+  out << "\nThe reconstruction's part, by error, with ties:\n\n"
+      << ties(split, [](const TradeoffRow& r) -> const ErrorEstimate& { return r.reconstructionPart; });
   return out.str();
 }
 

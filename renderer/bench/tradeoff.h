@@ -24,6 +24,11 @@ struct TradeoffRow {
   // jumps across untagged and C0 edges against the reference's own (steps per pixel).
   ErrorEstimate linearError, displayError, machError, c0KinkError;
   double referenceNoiseRmse = 0.0, referenceNoiseSteps = 0.0;  // the reference image's, every row alike
+  // Per pixel rows: the display error split into the solution's part and the reconstruction's
+  // (bench/nodal_reference.h), when `split`.
+  ErrorEstimate solutionPart, reconstructionPart;
+  double nodeNoiseSteps = 0.0;  // the noise the drawn nodal values carry (ErrorSplit)
+  bool split = false;
   std::string image;  // the row's linear image in the output folder (its file name)
   bool pareto = false;  // no other row is both faster and more accurate (displayError's estimate)
 };
@@ -39,6 +44,9 @@ std::string rowFileStem(const TradeoffRow& row);
 // The per-pixel rows (setting "per pixel") grouped by their display errors' intervals: one
 // line per row, naming the rows it ties with (intervals overlap) and those it is better than.
 std::string tieReport(const std::vector<TradeoffRow>& rows);
+// The split rows' error, solution's part and reconstruction's part as a Markdown table, then
+// the ties of the reconstruction's part as tieReport gives them; empty when no row is split.
+std::string splitReport(const std::vector<TradeoffRow>& rows);
 
 // A figure to 3 significant digits (or `digits`), as the tables print it.
 std::string number(double v, int digits = 3);

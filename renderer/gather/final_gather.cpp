@@ -110,12 +110,26 @@ PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32
     result.B = interpolant_->evaluate(element, seen->position).B;
     return result;
   }
-  // C&W eq. 9.9.
+  result.B = radiosityAt(element, seen->position, u, result.rays);
+  return result;
+}
+
+// C&W eq. 9.9 at x, a point of `element` seen from its front.
+Rgb FinalGather::radiosityAt(uint32_t element, const Vec3& x, const GatherSequence::PixelPoint& u,
+                             uint32_t& rays) const {
   const Material& material = mesh_.materials[size_t(mesh_.elements[element].material)];
   const Vec3& n = normals_[element];
-  const Rgb gathered = directLight(seen->position, n, u, result.rays) + indirectLight(seen->position, n, u, result.rays);
-  result.B = material.E + material.rho * gathered;
-  return result;
+  return material.E + material.rho * (directLight(x, n, u, rays) + indirectLight(x, n, u, rays));
+}
+
+Rgb FinalGather::samplePoint(uint32_t element, const Vec3& x, uint64_t index, int pass) const {
+  RADVIEW_CHECK(element < mesh_.elements.size());
+  const uint32_t run = uint32_t(pass % settings_.runs), passOfRun = uint32_t(pass / settings_.runs);
+  const std::vector<uint32_t> point = sequence_.point(passOfRun);
+  // Keyed apart from the pixels' numbers, so that points and pixels are independent estimates.
+  const GatherSequence::PixelPoint u(point, ~settings_.seed, index, passOfRun, run);
+  uint32_t rays = 0;
+  return radiosityAt(element, x, u, rays);
 }
 
 std::optional<RayHit> FinalGather::centreHit(int x, int y) const {

@@ -100,10 +100,15 @@ class FinalGather {
 
   // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
   PixelSample samplePixel(int x, int y, int pass) const;
+  // Sample number `pass` of eq. 9.9 at a surface point x of `element`, seen from its front,
+  // its numbers those of point `index` (of the gather's run pass mod runs): independent of
+  // every pixel's and every other index's. Thread-safe.
+  Rgb samplePoint(uint32_t element, const Vec3& x, uint64_t index, int pass) const;
 
  private:
   // samplePixel with the pass's point formed (GatherSequence::point), as addPasses forms it once.
   PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const;
+  Rgb radiosityAt(uint32_t element, const Vec3& x, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
   // What pixel (x, y)'s centre sees: cast once, at the first pass (pixelCentres).
   std::optional<RayHit> centreHit(int x, int y) const;
   Rgb directLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;

