@@ -99,6 +99,14 @@ void DeferredPass::draw(const glm::mat4& clipFromWorld, GLuint target) {
     drawDeferred(clipFromWorld, target);
 }
 
+void DeferredPass::drawDepth(const glm::mat4& clipFromWorld) {
+  visibility_.set("clipFromWorld", clipFromWorld);
+  visibility_.setViewportSize();
+  visibility_.use();
+  glBindVertexArray(vao_);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+}
+
 void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
   const ShaderProgram& program = forward_[degree_ == 3];
@@ -118,11 +126,7 @@ void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
   // Pass 1: visibility and depth, into the target's colour.
-  visibility_.set("clipFromWorld", clipFromWorld);
-  visibility_.setViewportSize();
-  visibility_.use();
-  glBindVertexArray(vao_);
-  glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+  drawDepth(clipFromWorld);
 
   // Pass 2: each covered pixel's value over what pass 1 left there. A fragment that reads only
   // the texel it writes may sample its own render target once pass 1's writes are made visible

@@ -44,6 +44,9 @@ class DeferredPass {
   // which reads less (README, "At scale"): each Clough-Tocher vertex reads its own corner's
   // values as vertex attributes, each C1 quadratic vertex its triangle's as texels.
   void draw(const glm::mat4& clipFromWorld, GLuint target);
+  // The surfaces' depth alone, into the bound framebuffer (the visibility raster, its colour
+  // writes masked by the caller): what overlays are depth-tested against.
+  void drawDepth(const glm::mat4& clipFromWorld);
 
  private:
   void drawDeferred(const glm::mat4& clipFromWorld, GLuint target);

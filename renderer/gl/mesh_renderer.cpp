@@ -239,7 +239,8 @@ BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, 
 }
 
 void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
-                                 const glm::mat4& clipFromWorld, int width, int height, bool comparison) {
+                                 const glm::mat4& clipFromWorld, int width, int height, bool comparison,
+                                 bool depthOnly) {
   GLint framebuffer = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
   const float clearLinear[] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -248,9 +249,6 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // radiosity surfaces are seen from both sides in a viewer
-  // Push surfaces back a little so edge overlays drawn at the same depth win.
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1.0f, 1.0f);
   const GpuPath path = methodInfo(method).gpu;
   if (path == GpuPath::Triangles) {
     meshProgram_.set("clipFromWorld", clipFromWorld);
@@ -281,7 +279,10 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     // The comparison shares the method's pieces when it is the same method per pixel.
     const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
     DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
-    pass.draw(clipFromWorld, GLuint(framebuffer));
+    if (depthOnly)
+      pass.drawDepth(clipFromWorld);
+    else
+      pass.draw(clipFromWorld, GLuint(framebuffer));
     statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
   } else {
     BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;
@@ -295,7 +296,6 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
     if (serendipityPass && serendipityVertices_ > 0)
       drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
   }
-  glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 void MeshRenderer::uploadPolygons() {
@@ -397,7 +397,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   } passStateReset;
   drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison.method);
   drawDisplayPass(settings, comparison);
-  drawOverlays(settings, camera, clipFromWorld, drawNet);
+  drawOverlays(settings, camera, clipFromWorld, width, height, drawNet);
   glEndQuery(GL_TIME_ELAPSED);
   ++frame_;
   glBindVertexArray(0);
@@ -459,9 +459,9 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
   // Pass 1: linear radiosity and depth; for a difference view against another method, that
   // method first, into the comparison target.
   glViewport(0, 0, width, height);
-  // The surfaces' polygon offset (drawRadiosity) grows with their depth slope, which is
-  // unbounded at grazing angles: a floor seen 0.01 degree from edge-on was pushed past the far
-  // plane's depth along the horizon and lost a whole row of pixels to the background
+  // The surfaces' polygon offset under the overlays (drawOverlayDepth) grows with their depth
+  // slope, which is unbounded at grazing angles: a floor seen 0.01 degree from edge-on was pushed
+  // past the far plane's depth along the horizon and lost a whole row of pixels to the background
   // (tests/gl/extremes_render_test.cpp). Depth clamping keeps every fragment, and the depth range
   // ends at 0.5 so that a clamped one still passes GL_LESS against the cleared 1.0. Clamping
   // also stops near- and far-plane clipping: a surface nearer than zNear is still drawn.
@@ -478,10 +478,10 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
     RenderSettings comparison = settings;
     comparison.tessellation = 0;
-    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height, true);
+    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height, true, false);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
-  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false);
+  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false, false);
   if (hasShownImage())
     glBlitNamedFramebuffer(shownFbo_, targets_.linearFramebuffer(), 0, 0, shownWidth_, shownHeight_, 0, 0, width,
                            height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -521,14 +521,35 @@ void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& colo
   glDrawArrays(GL_LINES, 0, vertices);
 }
 
+void MeshRenderer::drawOverlayDepth(const RenderSettings& settings, const Camera& camera,
+                                    const glm::mat4& clipFromWorld, int width, int height) {
+  // A line on a surface is depth-tested against it at pixel centres off the line, where the
+  // surface's depth differs from the line's by up to about half a pixel's depth change: large at
+  // grazing angles. So the overlays are tested against the surfaces pushed back by their own
+  // depth slope (glPolygonOffset's factor) and a few depth steps: the surfaces' depth drawn a
+  // second time, colour writes off. The radiosity pass itself is not offset: there a steep
+  // surface, pushed back further than a less steep one just behind it, lost to that one within
+  // a pixel of their common edge: the short block's back sides showed a pixel wide along the
+  // Cornell box's top face (tests/gl/edge_visibility_test.cpp).
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(1.0f, 1.0f);
+  drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false, true);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
+}
+
 void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
-                                bool drawNet) {
+                                int width, int height, bool drawNet) {
   const bool bezierMethod = methodInfo(settings.method).bezierPieces();
   const bool lines = (settings.elementEdges && edgeVertices_ > 0) ||
                      (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet));
   const bool markers =
       (settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0);
   if (!lines && !markers) return;
+  drawOverlayDepth(settings, camera, clipFromWorld, width, height);
   // Depth-tested against the surfaces, drawn over what is at their depth, not writing depth.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);

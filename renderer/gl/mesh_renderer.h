@@ -199,13 +199,17 @@ class MeshRenderer {
                          int width, int height, bool compareMethod);
   // Pass 2: the tone map or a false-colour view into the display target.
   void drawDisplayPass(const RenderSettings& settings, const FrameComparison& comparison);
-  // Pass 3: the overlays, depth-tested against the surfaces.
-  void drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, bool drawNet);
+  // Pass 3: the overlays, depth-tested against the surfaces pushed back (drawOverlayDepth).
+  void drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, int width,
+                    int height, bool drawNet);
+  void drawOverlayDepth(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, int width,
+                        int height);
   void drawLines(GLuint vao, GLsizei vertices, const glm::vec4& color, const glm::mat4& clipFromWorld);
   // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth;
-  // `comparison` when it is the difference view's comparison.
+  // `comparison` when it is the difference view's comparison. `depthOnly`: the depth that
+  // leaves (the caller masks colour writes), without the deferred evaluation.
   void drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
-                     const glm::mat4& clipFromWorld, int width, int height, bool comparison);
+                     const glm::mat4& clipFromWorld, int width, int height, bool comparison, bool depthOnly);
   // The comparison method's pieces, when it is a Bezier method (its own pass: switching
   // between the two every frame would rebuild them every frame).
   BezierPass comparisonPass_;
