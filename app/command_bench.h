@@ -14,7 +14,7 @@ struct BenchOptions {
   std::string camera;  // as render --camera
   std::string size = "512x512";
   double exposure = 0.0;
-  int spp = 64;                                     // the reference's samples per pixel, all runs together
+  int spp = 256;                                    // the reference's samples per pixel, all runs together
   int runs = 4;              // independent runs of the reference (error_estimate.h): its noise from their spread
   std::string truth;         // a linear image to measure against instead of the gather (exact, no interval)
   double precision = 0.0;    // add passes until every row's interval half-width is below this (steps); 0: --spp
