@@ -94,15 +94,18 @@ double ProgressiveRefinement::Patch::unshotPower() const {
 }
 
 // A node shared by elements of different surfaces (a mesh that welds across polygons) receives
-// as its first element's surface, as solveDirectIllumination does. It receives a little way
-// from its position towards that element's centroid: a node on the edge where two walls meet
-// lies in the other wall's plane, where the form factor to it is 0 by convention and its rays
-// would graze that wall, but B is continuous there and takes the limit from inside the element
-// (the wall then fills about half of its hemisphere). The step is twice the ray caster's lift,
-// so the rays start in front of the other wall as surely as they end in front of it, or 1 %
-// of the way for an element smaller than that; either way far below the element's size.
+// as its first element's surface, as solveDirectIllumination does. It receives at its own
+// position, with a point a little way towards that element's centroid for what the position
+// cannot give (ReceiverPoint::inside): a node on the edge where two walls meet lies in the
+// other wall's plane, where the form factor to it is 0 by convention and its rays would graze
+// that wall, but B is continuous there and takes the limit from inside the element (the wall
+// then fills about half of its hemisphere). The step is twice the ray caster's lift, so the
+// rays start in front of the other wall as surely as they end in front of it, or 1 % of the
+// way for an element smaller than that; either way far below the element's size. Only rays and
+// such edge-on form factors use it: the unoccluded form factor of every other node is taken at
+// the node, where the interpolants put its value.
 void ProgressiveRefinement::assignReceivers() {
-  nodePoint_.resize(mesh_.nodes.size(), Vec3(0.0));
+  nodeInside_.resize(mesh_.nodes.size(), Vec3(0.0));
   nodeNormal_.resize(mesh_.nodes.size(), Vec3(0.0));
   nodeSurface_.resize(mesh_.nodes.size(), -1);
   nodeMaterial_.resize(mesh_.nodes.size(), -1);
@@ -118,7 +121,7 @@ void ProgressiveRefinement::assignReceivers() {
         const Vec3 toInside = inside - mesh_.nodes[node].position;
         const double distance = glm::length(toInside);
         const double step = distance > 0.0 ? std::min(0.01, 2.0 * RayCaster::kLift * sceneDiagonal_ / distance) : 0.0;
-        nodePoint_[node] = mesh_.nodes[node].position + step * toInside;
+        nodeInside_[node] = mesh_.nodes[node].position + step * toInside;
         nodeNormal_[node] = normal;
         nodeSurface_[node] = element.surface;
         nodeMaterial_[node] = element.material;
@@ -133,8 +136,8 @@ Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std:
   // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
-  return radiosityFromPatch({nodePoint_[node], nodeNormal_[node]}, shooter.sampler, history_[shot].deltaB, stream,
-                            rayCaster_.get(), rays, scratch);
+  return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, shooter.sampler,
+                            history_[shot].deltaB, stream, rayCaster_.get(), rays, scratch);
 }
 
 bool ProgressiveRefinement::finished() const {

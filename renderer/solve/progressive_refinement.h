@@ -107,10 +107,11 @@ class ProgressiveRefinement {
   std::vector<Patch> patches_;
   std::vector<Piece> pieceOf_;       // per element
   std::vector<double> elementArea_;  // per element
-  // Per node, from the first element that uses it: the point and normal it receives at, its
-  // scene polygon, its material (-1: no element uses it yet); and its gathered radiosity H, the
-  // sum of deltaB F over the shots, so that B = E + rho H.
-  std::vector<Vec3> nodePoint_;
+  // Per node, from the first element that uses it: the point a hair inside that element its
+  // rays leave from (ReceiverPoint::inside), the normal it receives with, its scene polygon, its
+  // material (-1: no element uses it yet); and its gathered radiosity H, the sum of deltaB F
+  // over the shots, so that B = E + rho H.
+  std::vector<Vec3> nodeInside_;
   std::vector<Vec3> nodeNormal_;
   std::vector<int> nodeSurface_;
   std::vector<int> nodeMaterial_;
