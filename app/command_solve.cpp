@@ -159,7 +159,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
                     "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
                     "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size");
   command->add_flag("--no-ambient", o.noAmbient,
-                    "Write the solution without the ambient term (the unshot light, spread evenly)");
+                    "Write the solution without the ambient term (where the light not yet shot would go)");
   return command;
 }
 

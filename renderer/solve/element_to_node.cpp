@@ -9,8 +9,10 @@ namespace {
 template <typename Value, typename SampleValue>
 Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleValue& sampleB, const Value& meanB,
              SampleStream& stream, const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch) {
-  const double F0 = shooter.unoccluded().from(x.position, x.normal);
+  double F0 = shooter.unoccluded().from(x.position, x.normal);
+  if (F0 == 0.0 && x.inside) F0 = shooter.unoccluded().from(*x.inside, x.normal);
   if (F0 == 0.0) return Value(0.0);
+  const Vec3 origin = x.inside.value_or(x.position);
   if (!visibility) return F0 * meanB;
   if (scratch.size() < shooter.samples()) scratch.resize(shooter.samples());
   shooter.draw(stream, scratch.data());
@@ -25,7 +27,7 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
   double all = 0.0;
   for (size_t k = 0; k < shooter.samples(); ++k) {
     const AreaSample& sample = samples[k];
-    const Vec3 d = sample.position - x.position;
+    const Vec3 d = sample.position - origin;
     const double r2 = glm::dot(d, d);
     const double K = sample.weight * std::max(0.0, glm::dot(x.normal, d)) * std::max(0.0, -glm::dot(N, d)) / (r2 * r2);
     if (!(K > 0.0)) continue;
@@ -36,7 +38,7 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
   }
   rays += targets.size();
   blocked.resize(targets.size());
-  visibility->occludedFrom(x.position, x.normal, targets.data(), targets.size(), N, blocked.data());
+  visibility->occludedFrom(origin, x.normal, targets.data(), targets.size(), N, blocked.data());
   Value seen(0.0);
   for (size_t i = 0; i < facing.size(); ++i)
     if (!blocked[i]) seen += kernel[i] * sampleB(*facing[i]);

@@ -7,6 +7,7 @@
 #include "solve/ray_caster.h"
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace radview {
@@ -14,6 +15,12 @@ namespace radview {
 struct ReceiverPoint {
   Vec3 position;
   Vec3 normal;  // unit, the side that receives
+  // A point a hair inside the receiving element (unset: `position` itself). The visibility rays
+  // leave from it, so that rays from a node on the edge two walls share do not graze the other
+  // wall. F0 is taken there only where it is 0 at `position`: on the shooter's plane, where 0
+  // is the edge-on convention and B's value is the limit from inside the element. Everywhere
+  // else F0 is taken at `position` itself, so that an unoccluded node gets B at the node.
+  std::optional<Vec3> inside = std::nullopt;
 };
 
 // F(dA_x -> A_i) = F0 * (sum_k K_k V_k) / (sum_k K_k), F0 the exact unoccluded point-to-polygon

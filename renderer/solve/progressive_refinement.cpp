@@ -6,6 +6,7 @@
 #include "solve/element_to_node.h"
 #include "solve/shooting_patches.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -73,8 +74,14 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
   for (size_t p = 0; p < outlines.size(); ++p) {
     const Element& element = mesh_.elements[first[p]];
     const Material& material = mesh_.materials[element.material];
-    Patch patch{PatchSampler(outlines[p], settings_.samples), std::vector<Rgb>(outlines[p].size(), material.E),
-                material.rho, material.E, element.surface};
+    const auto largest = std::max_element(outlines[p].begin(), outlines[p].end(),
+                                          [](const auto& a, const auto& b) { return area(a) < area(b); });
+    Patch patch{PatchSampler(outlines[p], settings_.samples),
+                std::vector<Rgb>(outlines[p].size(), material.E),
+                material.rho,
+                material.E,
+                element.surface,
+                centroid(*largest)};
     emittedPower_ += patch.unshotPower();
     patches_.push_back(std::move(patch));
   }
@@ -94,15 +101,18 @@ double ProgressiveRefinement::Patch::unshotPower() const {
 }
 
 // A node shared by elements of different surfaces (a mesh that welds across polygons) receives
-// as its first element's surface, as solveDirectIllumination does. It receives a little way
-// from its position towards that element's centroid: a node on the edge where two walls meet
-// lies in the other wall's plane, where the form factor to it is 0 by convention and its rays
-// would graze that wall, but B is continuous there and takes the limit from inside the element
-// (the wall then fills about half of its hemisphere). The step is twice the ray caster's lift,
-// so the rays start in front of the other wall as surely as they end in front of it, or 1 %
-// of the way for an element smaller than that; either way far below the element's size.
+// as its first element's surface, as solveDirectIllumination does. It receives at its own
+// position, with a point a little way towards that element's centroid for what the position
+// cannot give (ReceiverPoint::inside): a node on the edge where two walls meet lies in the
+// other wall's plane, where the form factor to it is 0 by convention and its rays would graze
+// that wall, but B is continuous there and takes the limit from inside the element (the wall
+// then fills about half of its hemisphere). The step is twice the ray caster's lift, so the
+// rays start in front of the other wall as surely as they end in front of it, or 1 % of the
+// way for an element smaller than that; either way far below the element's size. Only rays and
+// such edge-on form factors use it: the unoccluded form factor of every other node is taken at
+// the node, where the interpolants put its value.
 void ProgressiveRefinement::assignReceivers() {
-  nodePoint_.resize(mesh_.nodes.size(), Vec3(0.0));
+  nodeInside_.resize(mesh_.nodes.size(), Vec3(0.0));
   nodeNormal_.resize(mesh_.nodes.size(), Vec3(0.0));
   nodeSurface_.resize(mesh_.nodes.size(), -1);
   nodeMaterial_.resize(mesh_.nodes.size(), -1);
@@ -118,7 +128,7 @@ void ProgressiveRefinement::assignReceivers() {
         const Vec3 toInside = inside - mesh_.nodes[node].position;
         const double distance = glm::length(toInside);
         const double step = distance > 0.0 ? std::min(0.01, 2.0 * RayCaster::kLift * sceneDiagonal_ / distance) : 0.0;
-        nodePoint_[node] = mesh_.nodes[node].position + step * toInside;
+        nodeInside_[node] = mesh_.nodes[node].position + step * toInside;
         nodeNormal_[node] = normal;
         nodeSurface_[node] = element.surface;
         nodeMaterial_[node] = element.material;
@@ -133,8 +143,8 @@ Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std:
   // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
-  return radiosityFromPatch({nodePoint_[node], nodeNormal_[node]}, shooter.sampler, history_[shot].deltaB, stream,
-                            rayCaster_.get(), rays, scratch);
+  return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, shooter.sampler,
+                            history_[shot].deltaB, stream, rayCaster_.get(), rays, scratch);
 }
 
 bool ProgressiveRefinement::finished() const {
@@ -248,28 +258,105 @@ size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
   return split;
 }
 
-// Cohen et al. 1988, §2.3: the ambient term, the unshot radiosity spread evenly over the scene
-// and interreflected with the area-weighted mean reflectance: R / A * sum unshot_p A_p,
-// R = 1 / (1 - rho_mean).
-Rgb ProgressiveRefinement::ambient() const {
-  Rgb unshot(0.0), rho(0.0);
-  double total = 0.0;
-  for (const Patch& patch : patches_) {
-    for (size_t p = 0; p < patch.unshot.size(); ++p) unshot += patch.unshot[p] * patch.sampler.polygonArea(p);
-    rho += patch.rho * patch.sampler.area();
-    total += patch.sampler.area();
+// The form factors between the patches, from each one's centre, with the visibility of the
+// solve's own estimator (elementToNodeFormFactor), each pair with its own sample stream; and
+// the fraction of each that is visible, F / F0 (1 where F0 is 0).
+void ProgressiveRefinement::makePatchFormFactors() const {
+  const size_t n = patches_.size();
+  patchF_.assign(n * n, 0.0);
+  patchVisibility_.assign(n * n, 1.0);
+  parallelFor(
+      n,
+      [&](size_t i) {
+        thread_local std::vector<AreaSample> scratch;
+        const Patch& receiver = patches_[i];
+        for (size_t j = 0; j < n; ++j) {
+          if (j == i || (receiver.surface >= 0 && patches_[j].surface == receiver.surface)) continue;
+          SampleStream stream = SampleStream::forKey(settings_.seed, UINT64_MAX, i * n + j);
+          size_t rays = 0;
+          const double F = elementToNodeFormFactor({receiver.centre, receiver.sampler.normal()}, patches_[j].sampler,
+                                                   stream, rayCaster_.get(), rays, scratch);
+          const double F0 = patches_[j].sampler.unoccluded().from(receiver.centre, receiver.sampler.normal());
+          patchF_[i * n + j] = F;
+          if (F0 > 0.0) patchVisibility_[i * n + j] = F / F0;
+        }
+      },
+      1);
+}
+
+// Cohen et al. 1988, §2.3's ambient term, the light not yet shot, estimated by where it goes
+// rather than spread evenly: the paper's even spread gives every surface the same share, and
+// over-brightens surfaces that the patches holding the unshot light barely see (a face turned
+// away from the lit floor and walls). At the patches, the unshot radiosity U and what it brings
+// after any number of bounces Y solve Y_i = rho_i sum_j F_ij (U_j + Y_j), the radiosity
+// equation on the patches with the solve's visibility, by Jacobi iteration (C&W ch. 5). A node
+// then gathers sum_j F_xj (U_j + Y_j): the exact unoccluded factor from the node, times the
+// visible fraction of patch j seen from the centre of the patch the node lies in. A converged
+// solution has U = 0 and gets 0.
+std::vector<Rgb> ProgressiveRefinement::ambient() const {
+  const size_t n = patches_.size();
+  std::vector<Rgb> U(n, Rgb(0.0));  // area-weighted mean per patch
+  for (size_t j = 0; j < n; ++j) {
+    const Patch& patch = patches_[j];
+    for (size_t p = 0; p < patch.unshot.size(); ++p) U[j] += patch.unshot[p] * patch.sampler.polygonArea(p);
+    U[j] /= patch.sampler.area();
   }
-  return (unshot / total) / (Rgb(1.0) - rho / total);
+  std::vector<Rgb> G(mesh_.nodes.size(), Rgb(0.0));
+  if (std::all_of(U.begin(), U.end(), [](const Rgb& u) { return u == Rgb(0.0); })) return G;
+  std::call_once(patchFormFactorsMade_, [this] { makePatchFormFactors(); });
+  const std::vector<double>& F = patchF_;
+  const std::vector<double>& visible = patchVisibility_;
+  // Y converges as rho F's powers shrink (rho < 1, sum_j F_ij <= 1): stopped when a sweep adds
+  // less than a millionth of the largest value.
+  std::vector<Rgb> W = U, next(n);  // W = U + Y
+  for (int sweep = 0; sweep < 1000; ++sweep) {
+    double change = 0.0, largest = 0.0;
+    for (size_t i = 0; i < n; ++i) {
+      Rgb gathered(0.0);
+      for (size_t j = 0; j < n; ++j) gathered += F[i * n + j] * W[j];
+      next[i] = U[i] + patches_[i].rho * gathered;
+      for (int k = 0; k < 3; ++k) {
+        change = std::max(change, std::abs(next[i][k] - W[i][k]));
+        largest = std::max(largest, next[i][k]);
+      }
+    }
+    W.swap(next);
+    if (change <= 1e-6 * largest) break;
+  }
+  // The patch each node receives in: that of the first element that uses it, as assignReceivers.
+  std::vector<uint32_t> patchOf(mesh_.nodes.size(), UINT32_MAX);
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e)
+    for (const auto* list : {&mesh_.elements[e].corners, &mesh_.elements[e].midEdge})
+      for (uint32_t node : *list)
+        if (patchOf[node] == UINT32_MAX) patchOf[node] = pieceOf_[e].patch;
+  parallelFor(
+      mesh_.nodes.size(),
+      [&](size_t node) {
+        if (nodeMaterial_[node] < 0) return;
+        const Vec3& x = mesh_.nodes[node].position;
+        const size_t p = patchOf[node];
+        for (size_t j = 0; j < n; ++j) {
+          const Patch& shooter = patches_[j];
+          if (W[j] == Rgb(0.0) || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) continue;
+          // At the inside point where the shooter is edge-on to the node, as gathered() does.
+          double F0 = shooter.sampler.unoccluded().from(x, nodeNormal_[node]);
+          if (F0 == 0.0) F0 = shooter.sampler.unoccluded().from(nodeInside_[node], nodeNormal_[node]);
+          if (F0 == 0.0) continue;
+          G[node] += F0 * visible[p * n + j] * W[j];
+        }
+      },
+      32);
+  return G;
 }
 
 RadiosityMesh ProgressiveRefinement::solution(bool withAmbient) const {
   RadiosityMesh result = mesh_;
   result.hasGradients = false;
-  const Rgb extra = withAmbient ? ambient() : Rgb(0.0);
+  const std::vector<Rgb> extra = withAmbient ? ambient() : std::vector<Rgb>(mesh_.nodes.size(), Rgb(0.0));
   for (size_t node = 0; node < result.nodes.size(); ++node) {
     if (nodeMaterial_[node] < 0) continue;
     const Material& material = mesh_.materials[nodeMaterial_[node]];
-    result.nodes[node].B = material.E + material.rho * (H_[node] + extra);
+    result.nodes[node].B = material.E + material.rho * (H_[node] + extra[node]);
     result.nodes[node].gradient = {};
   }
   return result;

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace radview {
@@ -69,7 +70,8 @@ class ProgressiveRefinement {
   // estimate of the light not yet shot (0 with withAmbient false, and for a converged solution
   // about 0): display only, the solution itself never includes it.
   RadiosityMesh solution(bool withAmbient) const;
-  Rgb ambient() const;
+  // The ambient term per node: the radiosity the unshot light would still bring it.
+  std::vector<Rgb> ambient() const;
   EnergyBalance energyBalance() const;
   // The zero-area polygons the ray caster left out.
   size_t ignoredPolygons() const { return rayCaster_->skippedPolygons(); }
@@ -82,6 +84,9 @@ class ProgressiveRefinement {
     std::vector<Rgb> unshot;  // per polygon of the sampler (initial element)
     Rgb rho{0.0}, E{0.0};
     int surface = -1;
+    // The centroid of its largest polygon: a point on the patch, which the centroid of a
+    // grouped patch's polygons need not be.
+    Vec3 centre{0.0};
     double unshotPower() const;  // summed over R, G, B
   };
   struct Shot {
@@ -97,6 +102,7 @@ class ProgressiveRefinement {
   Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
   void valueNewNodes(size_t firstNode);
   void updateUnshotFraction();
+  void makePatchFormFactors() const;
 
   SolverSettings settings_;
   RadiosityMesh mesh_;
@@ -107,16 +113,21 @@ class ProgressiveRefinement {
   std::vector<Patch> patches_;
   std::vector<Piece> pieceOf_;       // per element
   std::vector<double> elementArea_;  // per element
-  // Per node, from the first element that uses it: the point and normal it receives at, its
-  // scene polygon, its material (-1: no element uses it yet); and its gathered radiosity H, the
-  // sum of deltaB F over the shots, so that B = E + rho H.
-  std::vector<Vec3> nodePoint_;
+  // Per node, from the first element that uses it: the point a hair inside that element its
+  // rays leave from (ReceiverPoint::inside), the normal it receives with, its scene polygon, its
+  // material (-1: no element uses it yet); and its gathered radiosity H, the sum of deltaB F
+  // over the shots, so that B = E + rho H.
+  std::vector<Vec3> nodeInside_;
   std::vector<Vec3> nodeNormal_;
   std::vector<int> nodeSurface_;
   std::vector<int> nodeMaterial_;
   std::vector<Rgb> H_;
   std::vector<Shot> history_;
   double emittedPower_ = 0.0;  // sum over channels
+  // [i * patches + j]: the form factor from patch i's centre to patch j with visibility, and
+  // its visible fraction; made on first use (the ambient term), as the patches never change.
+  mutable std::once_flag patchFormFactorsMade_;
+  mutable std::vector<double> patchF_, patchVisibility_;
   SolveProgress progress_;
 };
 
