@@ -3,14 +3,16 @@
 // budgets asked; every solution is rendered from the view (Gouraud and Clough-Tocher, through
 // EGL) and compared with one reference per view, the per-pixel final gather (eq. 9.9) over the
 // finest view-independent solution, as `radview bench` compares: display RMSE in 8-bit steps
-// over the pixels whose neighbours see the same plane. The table gives, for each view-driven
+// over the pixels whose neighbours see the same plane, against what the gather converges to
+// (its four runs' noise taken out, bench/bench_reference.h), +- the 95 % interval's half-width.
+// The table gives, for each view-driven
 // solve, the elements with which the view-independent solve first has the same error or less
 // (elementsForError).
 //   build/radview_view_bench [--size WxH] [--spp N] [--budgets 600,1000,2000] [--sweep 600,...,32000]
 //                            [--tolerance STEPS] [--view NAME=CAMERA]...
+#include "bench/bench_reference.h"
 #include "bench/image_error.h"
 #include "core/camera.h"
-#include "core/image_difference.h"
 #include "gather/final_gather.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
@@ -64,23 +66,27 @@ Solved solve(const Scene& scene, size_t budget, double tolerance, const std::vec
   return solved;
 }
 
-// Display RMSE in 8-bit steps of a method's render of `mesh` against the reference, over the
-// interior pixels.
-double displayRmse(gl::MeshRenderer& renderer, const RadiosityMesh& mesh, Method method, const SolveView& view,
-                   const ReferenceImage& reference, const std::vector<char>& interior) {
+// The display error in 8-bit steps of a method's render of `mesh` against the reference.
+ErrorEstimate displayError(gl::MeshRenderer& renderer, const RadiosityMesh& mesh, Method method,
+                           const SolveView& view, const BenchReference& reference) {
   renderer.setMesh(mesh);
   gl::RenderSettings settings;
   settings.method = method;
   renderer.render(view.camera, settings, view.width, view.height);
-  LinearImage image = renderer.readLinear();
-  for (size_t p = 0; p < interior.size(); ++p)
-    if (!interior[p]) image.rgba[4 * p + 3] = 0.0f;
-  return 255.0 * displayDifference(image, reference, 1.0).rmse;
+  return reference.error(reference.rowValues(renderer.readLinear())).display;
+}
+
+// "4.54±0.05": an estimate and its 95 % interval's larger half.
+std::string steps(const ErrorEstimate& e) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.2f±%.2f", e.rms(), std::max(e.rms() - e.rmsLow(), e.rmsHigh() - e.rms()));
+  return text;
 }
 
 struct Errors {
   size_t elements = 0;
-  double gouraud = 0.0, cloughTocher = 0.0;
+  double gouraud = 0.0, cloughTocher = 0.0;  // the estimates, display steps
+  std::string gouraudText, cloughTocherText;  // with their intervals
 };
 
 // The elements with which the view-independent sweep first reaches `target`, interpolated in
@@ -186,15 +192,23 @@ int main(int argc, char** argv) {
       gather.width = width;
       gather.height = height;
       gather.camera = view.camera;
+      gather.runs = 4;
+      gather.pixelCentres = true;
       FinalGather reference(finest, gather);
-      reference.addPasses(spp);
-      const ReferenceImage referenceImage{reference.image(), true, view.name + " reference"};
+      reference.addPasses((spp + gather.runs - 1) / gather.runs * gather.runs);
       const std::vector<char> interior =
           interiorPixels(finest, visibleElements(finest, view.camera, width, height), width, height);
+      std::vector<uint32_t> pixels;
+      for (size_t p = 0; p < interior.size(); ++p)
+        if (interior[p]) pixels.push_back(uint32_t(p));
+      BenchReference yardstick(width, height, pixels, {}, {}, 1.0);
+      std::vector<LinearImage> runs;
+      for (int r = 0; r < gather.runs; ++r) runs.push_back(reference.runImage(r));
+      yardstick.setRuns(runs);
       auto errorsOf = [&](const RadiosityMesh& mesh) {
-        return Errors{mesh.elements.size(),
-                      displayRmse(renderer, mesh, Method::Gouraud, view, referenceImage, interior),
-                      displayRmse(renderer, mesh, Method::CloughTocher, view, referenceImage, interior)};
+        const ErrorEstimate g = displayError(renderer, mesh, Method::Gouraud, view, yardstick);
+        const ErrorEstimate c = displayError(renderer, mesh, Method::CloughTocher, view, yardstick);
+        return Errors{mesh.elements.size(), g.rms(), c.rms(), steps(g), steps(c)};
       };
       std::vector<Errors> sweepErrors;
       for (const Solved& s : independent) sweepErrors.push_back(errorsOf(s.mesh));
@@ -206,8 +220,9 @@ int main(int argc, char** argv) {
         const Errors p = at < sweep.size() ? sweepErrors[at] : errorsOf(solve(scene, budget, tolerance, {}).mesh);
         const double gouraudNeeds = elementsForError(sweepErrors, &Errors::gouraud, d.gouraud);
         const double ctNeeds = elementsForError(sweepErrors, &Errors::cloughTocher, d.cloughTocher);
-        std::printf("| %s | %zu | %zu, %.2f / %.2f | %zu, %.2f / %.2f | %s / %s | %s / %s |\n", view.name.c_str(),
-                    budget, p.elements, p.gouraud, p.cloughTocher, d.elements, d.gouraud, d.cloughTocher,
+        std::printf("| %s | %zu | %zu, %s / %s | %zu, %s / %s | %s / %s | %s / %s |\n", view.name.c_str(), budget,
+                    p.elements, p.gouraudText.c_str(), p.cloughTocherText.c_str(), d.elements, d.gouraudText.c_str(),
+                    d.cloughTocherText.c_str(),
                     needed(gouraudNeeds, sweepErrors).c_str(), needed(ctNeeds, sweepErrors).c_str(),
                     ratio(gouraudNeeds, d.elements).c_str(), ratio(ctNeeds, d.elements).c_str());
         std::fflush(stdout);
@@ -223,7 +238,7 @@ int main(int argc, char** argv) {
     for (size_t i = 0; i < independent.size(); ++i) {
       std::printf("| %zu |", independent[i].mesh.elements.size());
       for (const std::vector<Errors>& errors : sweepOf)
-        std::printf(" %.2f / %.2f |", errors[i].gouraud, errors[i].cloughTocher);
+        std::printf(" %s / %s |", errors[i].gouraudText.c_str(), errors[i].cloughTocherText.c_str());
       std::printf("\n");
     }
   } catch (const std::exception& e) {
