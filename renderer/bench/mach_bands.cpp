@@ -1,5 +1,6 @@
 #include "bench/mach_bands.h"
 
+#include "bench/image_error.h"
 #include "core/display_transform.h"
 
 #include <algorithm>
@@ -56,11 +57,7 @@ EdgeStencils edgeStencils(const RadiosityMesh& mesh, const std::vector<int32_t>&
     if (!added) return it->second;
     const Element &ea = mesh.elements[a], &eb = mesh.elements[b];
     const bool emits = mesh.materials[ea.material].isEmitter() || mesh.materials[eb.material].isEmitter();
-    const bool coplanar = glm::dot(mesh.elementNormal(a), mesh.elementNormal(b)) > 1.0 - 1e-9 &&
-                          std::abs(glm::dot(mesh.elementNormal(a),
-                                            mesh.nodes[eb.corners[0]].position - mesh.nodes[ea.corners[0]].position)) <
-                              1e-9 * mesh.bounds().diagonal();
-    if (!emits && coplanar) it->second = continuity.between(uint32_t(a), uint32_t(b));
+    if (!emits && coplanarElements(mesh, size_t(a), size_t(b))) it->second = continuity.between(uint32_t(a), uint32_t(b));
     return it->second;
   };
   EdgeStencils stencils;
