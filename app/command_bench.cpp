@@ -7,9 +7,9 @@
 #include "bench/bench_reference.h"
 #include "bench/bench_variants.h"
 #include "bench/error_map.h"
-#include "bench/nodal_reference.h"
 #include "bench/image_error.h"
 #include "bench/mach_bands.h"
+#include "bench/nodal_reference.h"
 #include "bench/tradeoff.h"
 #include "core/atomic_file.h"
 #include "core/camera.h"
@@ -56,12 +56,12 @@ LinearImage readTruth(const std::string& path, int width, int height) {
   if (!std::filesystem::exists(path)) throw Error(path, "--truth: no such file");
   const ReferenceImage image = readReferenceImage(path);
   if (!image.linear)
-    throw Error(path, "--truth: holds display colour (8 or 16-bit integers); it must be linear radiosity in a float "
-                      "format such as OpenEXR");
+    throw Error(path,
+                "--truth: holds display colour (8 or 16-bit integers); it must be linear radiosity in a float "
+                "format such as OpenEXR");
   if (image.pixels.width != width || image.pixels.height != height)
     throw Error(path, "--truth: is " + std::to_string(image.pixels.width) + "x" + std::to_string(image.pixels.height) +
-                          ", the bench renders " + std::to_string(width) + "x" + std::to_string(height) +
-                          " (--size)");
+                          ", the bench renders " + std::to_string(width) + "x" + std::to_string(height) + " (--size)");
   for (size_t i = 0; i < image.pixels.rgba.size(); ++i) {
     const float v = image.pixels.rgba[i];
     if (i % 4 == 3) continue;
@@ -175,7 +175,6 @@ void gatherReference(FinalGather& gather, const BenchOptions& options, const std
   seconds = secondsSince(start);
 }
 
-
 }  // namespace
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
@@ -210,13 +209,14 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
                    "into the solution's part and the reconstruction's; 0: no split")
       ->check(CLI::Range(0, kMaxGatherSpp))
       ->capture_default_str();
-  command->add_option("--max-seconds", o.maxSeconds, "With --precision: stop adding passes after this long; 0: no limit")
+  command
+      ->add_option("--max-seconds", o.maxSeconds, "With --precision: stop adding passes after this long; 0: no limit")
       ->check(CLI::Range(0.0, 1e9))
       ->capture_default_str();
-  command
-      ->add_option("--truth", o.truth,
-                   "Measure against this linear image (OpenEXR or another float format, the bench's size) instead "
-                   "of the gather: an analytic answer, a path tracer's render of the view; exact errors, no interval");
+  command->add_option(
+      "--truth", o.truth,
+      "Measure against this linear image (OpenEXR or another float format, the bench's size) instead "
+      "of the gather: an analytic answer, a path tracer's render of the view; exact errors, no interval");
   command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
       ->check(methodChoice(methodNames(true)))
       ->capture_default_str();
@@ -453,12 +453,12 @@ int runBench(const BenchOptions& options) {
             "rows whose intervals overlap are ties. Mach and C0 kink errors: the RMS difference of each row's "
             "gradient jumps from the reference's, over "
          << reference.stencilCount(false) << " stencils across untagged edges and " << reference.stencilCount(true)
-         << " across C0 edges; the reference's own RMS jumps (noise taken out) are " << withInterval(ownMach)
-         << " and " << withInterval(ownKinks) << " steps/px. Frame time: GPU timer queries, median of "
-         << options.frames << " frames, or of at least 3 once they take " << options.rowSeconds
+         << " across C0 edges; the reference's own RMS jumps (noise taken out) are " << withInterval(ownMach) << " and "
+         << withInterval(ownKinks) << " steps/px. Frame time: GPU timer queries, median of " << options.frames
+         << " frames, or of at least 3 once they take " << options.rowSeconds
          << " s (--row-seconds). Error maps (*-error.png): row minus reference in displayed luminance, blue -"
-         << kErrorMapSteps << " to red +" << kErrorMapSteps << " steps; *-error.exr the same in linear RGB. Whole bench: "
-         << number(secondsSince(benchStart)) << " s.\n";
+         << kErrorMapSteps << " to red +" << kErrorMapSteps
+         << " steps; *-error.exr the same in linear RGB. Whole bench: " << number(secondsSince(benchStart)) << " s.\n";
   if (!skipped.empty()) {
     header << "Not measured, their triangles more than " << options.maxTrianglesPerPixel
            << " times the pixels (--max-triangles-per-pixel):";
@@ -476,8 +476,10 @@ int runBench(const BenchOptions& options) {
   if (!writeTradeoffPlot(table, title, options.outDir + "/bench.png"))
     std::fprintf(stderr, "radview: warning: no font (fonts-dejavu-core): the plot has no labels\n");
   std::printf("%s", text.c_str());
-  std::printf("wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method, one EXR per row and its error map\n",
-              options.outDir.c_str(), truth ? "" : ", reference.exr");
+  std::printf(
+      "wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method, one EXR per row and its error "
+      "map\n",
+      options.outDir.c_str(), truth ? "" : ", reference.exr");
   return 0;
 }
 

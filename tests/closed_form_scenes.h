@@ -21,9 +21,9 @@
 namespace radview::test {
 
 struct ClosedFormScene {
-  Scene scene;             // polygon 0 the receiver, polygon 1 the emitter
+  Scene scene;  // polygon 0 the receiver, polygon 1 the emitter
   Vec3 receiverNormal{0.0};
-  Rgb rho{0.0}, E{0.0};    // the receiver's reflectance, the emitter's exitance
+  Rgb rho{0.0}, E{0.0};  // the receiver's reflectance, the emitter's exitance
 
   // Lambert's formula at a point x of the receiver (see above).
   double formFactor(const Vec3& x) const {
@@ -57,9 +57,8 @@ inline ClosedFormScene emitterOverSquare(double tiltDegrees = 0.0, double emitte
   s.scene.materials = {{"receiver", s.rho, Rgb(0.0)}, {"emitter", Rgb(0.0), s.E}};
   s.scene.polygons.push_back({{{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}, 0});
   const double a = 0.5 * emitterSide;
-  const glm::dmat4 turn =
-      glm::translate(glm::dmat4(1.0), Vec3(0.5, height, 0.5)) *
-      glm::rotate(glm::dmat4(1.0), glm::radians(tiltDegrees), Vec3(1.0, 0.0, 0.0));
+  const glm::dmat4 turn = glm::translate(glm::dmat4(1.0), Vec3(0.5, height, 0.5)) *
+                          glm::rotate(glm::dmat4(1.0), glm::radians(tiltDegrees), Vec3(1.0, 0.0, 0.0));
   std::vector<Vec3> emitter;
   for (const Vec3& corner : {Vec3(-a, 0, -a), Vec3(a, 0, -a), Vec3(a, 0, a), Vec3(-a, 0, a)})
     emitter.push_back(Vec3(turn * glm::dvec4(corner, 1.0)));  // faces -y before the turn

@@ -11,7 +11,7 @@ namespace radview {
 
 namespace {
 
-constexpr double kSteps = 255.0;  // display units per 8-bit step
+constexpr double kSteps = 255.0;                          // display units per 8-bit step
 constexpr double kWeights[3] = {0.2126, 0.7152, 0.0722};  // luminance()'s
 
 bool covered(const float* px) {

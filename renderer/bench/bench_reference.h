@@ -23,15 +23,15 @@ namespace radview {
 
 // One row's values on the bench's pixels and stencils.
 struct RowValues {
-  std::vector<float> luminance;  // Y(B) of each pixel, linear; an uncovered pixel 0
-  std::vector<float> display;    // D(B) of each pixel, 8-bit steps
+  std::vector<float> luminance;             // Y(B) of each pixel, linear; an uncovered pixel 0
+  std::vector<float> display;               // D(B) of each pixel, 8-bit steps
   std::vector<float> smoothJumps, c0Jumps;  // each stencil's gradient jump, steps per pixel
 };
 
 // A row's error against the reference, as bench.csv reports it.
 struct RowError {
-  ErrorEstimate linear;   // luminance of B, linear
-  ErrorEstimate display;  // displayed luminance, steps
+  ErrorEstimate linear;                // luminance of B, linear
+  ErrorEstimate display;               // displayed luminance, steps
   ErrorEstimate smoothJumps, c0Jumps;  // the gradient jumps across element edges, steps per pixel
   // Against the runs' mean, noise included, as the bench has always reported.
   double rmse = 0.0, maxError = 0.0, displayRmse = 0.0, displayMax = 0.0;

@@ -31,8 +31,8 @@ ErrorEstimate estimateMeanSquaredError(const std::vector<double>& row, const std
   if (K < 1 || K == 2)
     throw Error("error estimate: " + std::to_string(K) + " reference passes: expected 1 (exact) or 3 or more");
   if (passes.size() != row.size() * size_t(K))
-    throw Error("error estimate: " + std::to_string(passes.size()) + " pass values for " +
-                std::to_string(row.size()) + " items of " + std::to_string(K) + " passes");
+    throw Error("error estimate: " + std::to_string(passes.size()) + " pass values for " + std::to_string(row.size()) +
+                " items of " + std::to_string(K) + " passes");
   ErrorEstimate estimate;
   estimate.items = row.size();
   if (row.empty()) return estimate;

@@ -16,8 +16,8 @@
 // the U-statistic's variance formula (unbiased for normal passes; the jackknife, which needs
 // no such assumption, is far too wide at K = 4 where the noise is larger than the error); the
 // interval is Student's t with Welch-Satterthwaite's effective degrees of freedom, which are
-// about the item count when no few items dominate, and fall towards K - 1 when they do. Resampling blocks of pixels instead would measure how the error varies
-// across the image, not how uncertain the figure is.
+// about the item count when no few items dominate, and fall towards K - 1 when they do. Resampling blocks of pixels
+// instead would measure how the error varies across the image, not how uncertain the figure is.
 #include <cstddef>
 #include <vector>
 

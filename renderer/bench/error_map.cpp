@@ -28,7 +28,8 @@ double shown(const float* px, double exposureScale) {
 
 }  // namespace
 
-LinearImage signedDifference(const LinearImage& row, const LinearImage& reference, const std::vector<uint32_t>& pixels) {
+LinearImage signedDifference(const LinearImage& row, const LinearImage& reference,
+                             const std::vector<uint32_t>& pixels) {
   checkSizes(row, reference);
   LinearImage difference{row.width, row.height, std::vector<float>(row.rgba.size(), 0.0f)};
   for (uint32_t p : pixels) {
@@ -44,7 +45,8 @@ Image differenceMap(const LinearImage& row, const LinearImage& reference, const 
   Image map{row.width, row.height, std::vector<uint8_t>(row.rgba.size(), 128)};
   for (size_t i = 3; i < map.rgba.size(); i += 4) map.rgba[i] = 255;
   for (uint32_t p : pixels) {
-    const double d = shown(&row.rgba[4 * size_t(p)], exposureScale) - shown(&reference.rgba[4 * size_t(p)], exposureScale);
+    const double d =
+        shown(&row.rgba[4 * size_t(p)], exposureScale) - shown(&reference.rgba[4 * size_t(p)], exposureScale);
     const Rgb colour = diverging(std::isfinite(d) ? d / scaleSteps : 0.0);
     for (int c = 0; c < 3; ++c) map.rgba[4 * size_t(p) + size_t(c)] = uint8_t(std::lround(255.0 * colour[c]));
   }

@@ -57,7 +57,8 @@ EdgeStencils edgeStencils(const RadiosityMesh& mesh, const std::vector<int32_t>&
     if (!added) return it->second;
     const Element &ea = mesh.elements[a], &eb = mesh.elements[b];
     const bool emits = mesh.materials[ea.material].isEmitter() || mesh.materials[eb.material].isEmitter();
-    if (!emits && coplanarElements(mesh, size_t(a), size_t(b))) it->second = continuity.between(uint32_t(a), uint32_t(b));
+    if (!emits && coplanarElements(mesh, size_t(a), size_t(b)))
+      it->second = continuity.between(uint32_t(a), uint32_t(b));
     return it->second;
   };
   EdgeStencils stencils;

@@ -29,27 +29,30 @@ NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gathe
   NodalReference reference;
   reference.runs = runs;
   reference.B.resize(mesh.nodes.size() * size_t(runs));
-  parallelFor(mesh.nodes.size(), [&](size_t n) {
-    const uint32_t element = elementOf[n];
-    for (int r = 0; r < runs; ++r) reference.B[n * size_t(runs) + size_t(r)] = mesh.nodes[n].B;
-    if (element == kNone) return;
-    Vec3 centroid(0.0);
-    for (uint32_t c : mesh.elements[element].corners) centroid += mesh.nodes[c].position;
-    centroid /= double(mesh.elements[element].corners.size());
-    // Far enough in that the rays' lift off the surface (RayCaster::kLift) cannot carry them
-    // across the element's edge to the other side of a discontinuity, and no further than
-    // needed: 1e-3 of the way to the centroid, at least 20 lifts, at most half-way.
-    const Vec3 inward = centroid - mesh.nodes[n].position;
-    const double length = glm::length(inward);
-    if (!(length > 0.0)) return;
-    const double step = std::min(0.5 * length, std::max(1e-3 * length, 20.0 * lift));
-    const Vec3 x = mesh.nodes[n].position + inward * (step / length);
-    for (int r = 0; r < runs; ++r) {
-      Rgb sum(0.0);
-      for (int p = 0; p < samplesPerRun; ++p) sum += gather.samplePoint(element, x, n, p * runs + r);
-      reference.B[n * size_t(runs) + size_t(r)] = sum / double(samplesPerRun);
-    }
-  }, 16);
+  parallelFor(
+      mesh.nodes.size(),
+      [&](size_t n) {
+        const uint32_t element = elementOf[n];
+        for (int r = 0; r < runs; ++r) reference.B[n * size_t(runs) + size_t(r)] = mesh.nodes[n].B;
+        if (element == kNone) return;
+        Vec3 centroid(0.0);
+        for (uint32_t c : mesh.elements[element].corners) centroid += mesh.nodes[c].position;
+        centroid /= double(mesh.elements[element].corners.size());
+        // Far enough in that the rays' lift off the surface (RayCaster::kLift) cannot carry them
+        // across the element's edge to the other side of a discontinuity, and no further than
+        // needed: 1e-3 of the way to the centroid, at least 20 lifts, at most half-way.
+        const Vec3 inward = centroid - mesh.nodes[n].position;
+        const double length = glm::length(inward);
+        if (!(length > 0.0)) return;
+        const double step = std::min(0.5 * length, std::max(1e-3 * length, 20.0 * lift));
+        const Vec3 x = mesh.nodes[n].position + inward * (step / length);
+        for (int r = 0; r < runs; ++r) {
+          Rgb sum(0.0);
+          for (int p = 0; p < samplesPerRun; ++p) sum += gather.samplePoint(element, x, n, p * runs + r);
+          reference.B[n * size_t(runs) + size_t(r)] = sum / double(samplesPerRun);
+        }
+      },
+      16);
   return reference;
 }
 

@@ -44,8 +44,10 @@ std::string rowFileStem(const TradeoffRow& row) {
   std::string out;
   for (char c : stem) {
     const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.';
-    if (keep) out += char(std::tolower(static_cast<unsigned char>(c)));
-    else if (!out.empty() && out.back() != '-') out += '-';
+    if (keep)
+      out += char(std::tolower(static_cast<unsigned char>(c)));
+    else if (!out.empty() && out.back() != '-')
+      out += '-';
   }
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out;
@@ -105,8 +107,10 @@ std::string ties(const std::vector<TradeoffRow>& rows, Of of) {
     std::vector<std::string> ties, better;
     for (const TradeoffRow* other : perPixel) {
       if (other == r) continue;
-      if (tie(of(*r), of(*other))) ties.push_back(name(other));
-      else if (of(*r).rms() < of(*other).rms()) better.push_back(name(other));
+      if (tie(of(*r), of(*other)))
+        ties.push_back(name(other));
+      else if (of(*r).rms() < of(*other).rms())
+        better.push_back(name(other));
     }
     out << "- " << name(r) << " " << withInterval(of(*r)) << " steps: ";
     auto list = [&](const std::vector<std::string>& names) {

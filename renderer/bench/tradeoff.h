@@ -10,10 +10,10 @@
 namespace radview {
 
 struct TradeoffRow {
-  std::string method;                          // e.g. "clough-tocher"
-  std::string setting;                         // "per pixel", "level 4", "adaptive 0.5", ...
-  double frameMs = 0.0;                        // GPU time, median over frames
-  size_t triangles = 0;                        // drawn or generated
+  std::string method;    // e.g. "clough-tocher"
+  std::string setting;   // "per pixel", "level 4", "adaptive 0.5", ...
+  double frameMs = 0.0;  // GPU time, median over frames
+  size_t triangles = 0;  // drawn or generated
   // Against the reference image as it is (the mean of its runs, noise and all):
   double rmse = 0.0, maxError = 0.0;           // luminance of B, radiometric
   double displayRmse = 0.0, displayMax = 0.0;  // displayed luminance, 8-bit steps
@@ -29,7 +29,7 @@ struct TradeoffRow {
   ErrorEstimate solutionPart, reconstructionPart;
   double nodeNoiseSteps = 0.0;  // the noise the drawn nodal values carry (ErrorSplit)
   bool split = false;
-  std::string image;  // the row's linear image in the output folder (its file name)
+  std::string image;    // the row's linear image in the output folder (its file name)
   bool pareto = false;  // no other row is both faster and more accurate (displayError's estimate)
 };
 
@@ -60,9 +60,9 @@ std::string csvTable(const std::vector<TradeoffRow>& rows);
 
 // The display error estimate against frame time (log scale) as a PNG: every row a dot with its
 // 95 % interval as a bar, the Pareto front a line through its rows, labelled; a grey band is the
-// best row's interval, so a bar that reaches into it is a tie with the best. `title` goes on top. Labels need a TrueType font
-// (fonts-dejavu-core); without one the plot is drawn unlabelled and false is returned. Throws
-// Error naming the path when it cannot be written.
+// best row's interval, so a bar that reaches into it is a tie with the best. `title` goes on top. Labels need a
+// TrueType font (fonts-dejavu-core); without one the plot is drawn unlabelled and false is returned. Throws Error
+// naming the path when it cannot be written.
 bool writeTradeoffPlot(const std::vector<TradeoffRow>& rows, const std::string& title, const std::string& path);
 
 }  // namespace radview

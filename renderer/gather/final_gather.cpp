@@ -78,7 +78,7 @@ Rgb FinalGather::directLight(const Vec3& x, const Vec3& n, const GatherSequence:
 // The rest of eq. 9.9's integral, B^ - E over the surfaces, by one cosine-weighted direction:
 // with pdf cos(theta) / pi, G dA' = cos(theta) / pi dw cancels to B^(x') - E(x').
 Rgb FinalGather::indirectLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u,
-                                uint32_t& rays) const {
+                               uint32_t& rays) const {
   ++rays;
   const Vec3 direction = cosineWeightedDirection(n, u(kIndirectDimension), u(kIndirectDimension + 1));
   const std::optional<RayHit> hit = caster_->closestHit({x, direction, n});

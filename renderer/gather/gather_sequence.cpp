@@ -35,8 +35,8 @@ std::vector<uint32_t> GatherSequence::point(uint32_t pass) const {
   return words;
 }
 
-GatherSequence::PixelPoint::PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel,
-                                       uint32_t pass, uint32_t run)
+GatherSequence::PixelPoint::PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel, uint32_t pass,
+                                       uint32_t run)
     : words_(point.data()),
       shifts_(SampleStream::forKey(seed, pixel, uint64_t(run) << 32 | uint64_t(pass >> kIndexBits))) {}
 

@@ -122,7 +122,8 @@ void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
 
 void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
   GLint color = 0;
-  glGetNamedFramebufferAttachmentParameteriv(target, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &color);
+  glGetNamedFramebufferAttachmentParameteriv(target, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                                             &color);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
   // Pass 1: visibility and depth, into the target's colour.

@@ -55,7 +55,8 @@ class DeferredPass {
   ShaderProgram visibility_{{"visibility.vert", "visibility.frag"}};
   // One evaluation program per degree, quadratic [0] and cubic [1], and so the one-pass ones.
   static ShaderProgram program(const char* vertex, const char* fragment, int degree) {
-    return ShaderProgram({vertex, fragment}, {"DEGREE " + std::to_string(degree), "NET_VEC4S " + std::to_string(kNetVec4s)});
+    return ShaderProgram({vertex, fragment},
+                         {"DEGREE " + std::to_string(degree), "NET_VEC4S " + std::to_string(kNetVec4s)});
   }
   ShaderProgram resolve_[2] = {program("fullscreen.vert", "deferred_resolve.frag", 2),
                                program("fullscreen.vert", "deferred_resolve.frag", 3)};
@@ -63,7 +64,8 @@ class DeferredPass {
                                program("c1_forward.vert", "c1_forward.frag", 3)};
   // Triangle numbers travel as floats, exact below 2^24.
   static constexpr size_t kMaxTriangles = size_t(1) << 24;
-  GLuint vao_ = 0, oneCornerVao_[2] = {}, corners_ = 0, nets_ = 0, netsTexture_ = 0, emptyVao_ = 0;  // nets_ read as a buffer texture
+  GLuint vao_ = 0, oneCornerVao_[2] = {}, corners_ = 0, nets_ = 0, netsTexture_ = 0,
+         emptyVao_ = 0;  // nets_ read as a buffer texture
   size_t triangles_ = 0;
   int degree_ = 3;
 };

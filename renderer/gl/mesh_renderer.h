@@ -145,9 +145,10 @@ class MeshRenderer {
   // triangle's or quad's per vertex, as flat outputs (CORNERS_PER_VERTEX; drawPolygons picks).
   // Scanline Gouraud also for meshes with larger polygons (LARGE_POLYGONS, polygon.frag).
   static ShaderProgram polygonProgram(const char* mode, bool cornersPerVertex, bool largePolygons = false) {
-    return ShaderProgram({"polygon.vert", "polygon.frag"},
-                         {std::string("MODE ") + mode, std::string("CORNERS_PER_VERTEX ") + (cornersPerVertex ? "1" : "0"),
-                          std::string("LARGE_POLYGONS ") + (largePolygons ? "1" : "0")});
+    return ShaderProgram(
+        {"polygon.vert", "polygon.frag"},
+        {std::string("MODE ") + mode, std::string("CORNERS_PER_VERTEX ") + (cornersPerVertex ? "1" : "0"),
+         std::string("LARGE_POLYGONS ") + (largePolygons ? "1" : "0")});
   }
   ShaderProgram polygonPrograms_[3] = {polygonProgram("MODE_SCANLINE", false), polygonProgram("MODE_BILINEAR", false),
                                        polygonProgram("MODE_SERENDIPITY", false)};

@@ -26,8 +26,8 @@ TEST(ErrorMap, SignedDifferenceAtTheComparedPixelsOnly) {
 TEST(ErrorMap, BrighterIsRedDarkerBlueAgreementWhite) {
   // Pixel 0 ten steps brighter (the end of a 10-step scale), 1 equal, 2 darker, 3 not compared.
   const double ten = srgbDecode(srgbEncode(0.2) + 10.0 / 255.0);
-  const Image map = differenceMap(grey({float(ten), 0.2f, 0.1f, 0.7f}), grey({0.2f, 0.2f, 0.2f, 0.2f}), {0, 1, 2},
-                                  1.0, 10.0);
+  const Image map =
+      differenceMap(grey({float(ten), 0.2f, 0.1f, 0.7f}), grey({0.2f, 0.2f, 0.2f, 0.2f}), {0, 1, 2}, 1.0, 10.0);
   EXPECT_NEAR(map.rgba[0], 217, 1);  // red: 0.85
   EXPECT_NEAR(map.rgba[2], 26, 1);
   EXPECT_EQ(map.rgba[4], 255);  // white

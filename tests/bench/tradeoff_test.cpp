@@ -52,9 +52,9 @@ TEST(TradeoffTest, CsvKeepsItsColumnsAndAddsTheEstimatesByName) {
                          "mach_steps_per_px,c0_kink_steps_per_px,pareto,",
                          0),
             0u);
-  for (const char* column : {"rmse_estimate", "rmse_ci_low", "rmse_ci_high", "error_estimate_steps",
-                             "error_ci_low_steps", "error_ci_high_steps", "reference_noise_rmse",
-                             "reference_noise_steps", "image"})
+  for (const char* column :
+       {"rmse_estimate", "rmse_ci_low", "rmse_ci_high", "error_estimate_steps", "error_ci_low_steps",
+        "error_ci_high_steps", "reference_noise_rmse", "reference_noise_steps", "image"})
     EXPECT_NE(("," + header + ",").find("," + std::string(column) + ","), std::string::npos) << column;
   // Every line has as many fields as the header.
   const std::string line = csv.substr(header.size() + 1);

@@ -67,8 +67,8 @@ Solved solve(const Scene& scene, size_t budget, double tolerance, const std::vec
 }
 
 // The display error in 8-bit steps of a method's render of `mesh` against the reference.
-ErrorEstimate displayError(gl::MeshRenderer& renderer, const RadiosityMesh& mesh, Method method,
-                           const SolveView& view, const BenchReference& reference) {
+ErrorEstimate displayError(gl::MeshRenderer& renderer, const RadiosityMesh& mesh, Method method, const SolveView& view,
+                           const BenchReference& reference) {
   renderer.setMesh(mesh);
   gl::RenderSettings settings;
   settings.method = method;
@@ -85,7 +85,7 @@ std::string steps(const ErrorEstimate& e) {
 
 struct Errors {
   size_t elements = 0;
-  double gouraud = 0.0, cloughTocher = 0.0;  // the estimates, display steps
+  double gouraud = 0.0, cloughTocher = 0.0;   // the estimates, display steps
   std::string gouraudText, cloughTocherText;  // with their intervals
 };
 
@@ -222,9 +222,9 @@ int main(int argc, char** argv) {
         const double ctNeeds = elementsForError(sweepErrors, &Errors::cloughTocher, d.cloughTocher);
         std::printf("| %s | %zu | %zu, %s / %s | %zu, %s / %s | %s / %s | %s / %s |\n", view.name.c_str(), budget,
                     p.elements, p.gouraudText.c_str(), p.cloughTocherText.c_str(), d.elements, d.gouraudText.c_str(),
-                    d.cloughTocherText.c_str(),
-                    needed(gouraudNeeds, sweepErrors).c_str(), needed(ctNeeds, sweepErrors).c_str(),
-                    ratio(gouraudNeeds, d.elements).c_str(), ratio(ctNeeds, d.elements).c_str());
+                    d.cloughTocherText.c_str(), needed(gouraudNeeds, sweepErrors).c_str(),
+                    needed(ctNeeds, sweepErrors).c_str(), ratio(gouraudNeeds, d.elements).c_str(),
+                    ratio(ctNeeds, d.elements).c_str());
         std::fflush(stdout);
         std::fprintf(stderr, "%s, budget %zu: view-driven solve %.1f s\n", view.name.c_str(), budget, driven.seconds);
       }

@@ -157,16 +157,7 @@ Study study(const ClosedFormScene& s, const std::vector<Level>& meshes, const Ca
   for (const Level& level : meshes)
     out.errors.push_back(
         rmse(s, c.quadraticElements ? level.quadratic : level.linear, level.at, c.method, c.awayFromEdgeOnly));
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double count = double(std::size(kCells));
-  for (size_t i = 0; i < std::size(kCells); ++i) {
-    const double x = -std::log(double(kCells[i])), y = std::log(out.errors[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  out.order = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  out.order = observedOrder({std::begin(kCells), std::end(kCells)}, out.errors);
   return out;
 }
 

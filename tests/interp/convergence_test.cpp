@@ -90,16 +90,7 @@ Study study(const MethodCase& m, bool storedGradients, bool quadraticElements) {
     out.errors.push_back(maxError(mesh, m));
   }
   // Slope of log e against log(1/n) over the finest four levels.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const int count = int(std::size(kCells)) - 1;
-  for (int i = 1; i <= count; ++i) {
-    const double x = -std::log(double(kCells[i])), y = std::log(out.errors[size_t(i)]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  out.order = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  out.order = observedOrder({std::begin(kCells) + 1, std::end(kCells)}, {out.errors.begin() + 1, out.errors.end()});
   return out;
 }
 

@@ -396,4 +396,19 @@ inline std::string describe(const RadiosityMesh& mesh, uint32_t element) {
   return os.str();
 }
 
+// The observed order of convergence: the least-squares slope of log(error) against log(n), n
+// the cells per side of each mesh (the element size is 1/n), over the pairs given.
+inline double observedOrder(const std::vector<int>& cells, const std::vector<double>& errors) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double count = double(cells.size());
+  for (size_t i = 0; i < cells.size(); ++i) {
+    const double x = std::log(double(cells[i])), y = -std::log(errors[i]);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  return (count * sxy - sx * sy) / (count * sxx - sx * sx);
+}
+
 }  // namespace radview::test
