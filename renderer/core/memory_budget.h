@@ -17,7 +17,9 @@ namespace radview {
 inline constexpr uint64_t kRenderBytesPerPixel = 40;       // GL render to PNG: measured 31.5
 inline constexpr uint64_t kComparisonBytesPerPixel = 112;  // --view difference or --linear-out: 87.5
 inline constexpr uint64_t kGatherBytesPerPixel = 112;      // the final gather (also the viewer's): 88.6
-inline constexpr uint64_t kBenchBytesPerPixel = 192;       // bench (reference + every method): 148
+// bench: the reference's runs and sums, every row's values (8 a row), the error split's (32 a
+// split row) and the renders: 556 measured with 13 rows, about 1000 with the default 34.
+inline constexpr uint64_t kBenchBytesPerPixel = 1024;
 
 // The bytes radview may plan to use: RADVIEW_MAX_MEMORY when set (bytes, or with a K, M or G
 // suffix: powers of 1024), else what the kernel reports available without swapping
