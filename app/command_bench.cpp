@@ -404,12 +404,19 @@ int runBench(const BenchOptions& options) {
            << number(reference.noiseSteps()) << " display steps.\n";
     if (options.nodeSpp > 0) {
       const auto start = std::chrono::steady_clock::now();
-      const int perRun = (options.nodeSpp + options.runs - 1) / options.runs;
-      std::fprintf(stderr, "the reference at %zu nodes, %d spp\n", mesh.nodes.size(), perRun * options.runs);
-      const NodalReference nodal = gatherAtNodes(mesh, finalGather, perRun);
+      // Only the nodes the picture depends on, and no more samples at them than the image had:
+      // at 10^6 elements most nodes are out of view, and the rest outnumber nothing but pixels.
+      const std::vector<char> wanted = nodesOfTheView(mesh, elementAt);
+      const size_t nodes = size_t(std::count(wanted.begin(), wanted.end(), char(1)));
+      const double imageSamples = double(width) * double(height) * double(spp);
+      const int perRun = std::max(
+          1, int(std::min(double(options.nodeSpp), imageSamples / double(std::max<size_t>(nodes, 1))) / options.runs));
+      std::fprintf(stderr, "the reference at %zu nodes, %d spp\n", nodes, perRun * options.runs);
+      const NodalReference nodal = gatherAtNodes(mesh, finalGather, perRun, wanted);
       splitErrors(renderer, camera, exposureScale, width, height, mesh, unrelaxed, nodal, reference, rows);
-      header << "Where the error lives: eq. 9.9 at each of the " << mesh.nodes.size() << " nodes, "
-             << perRun * options.runs << " spp in the same runs, " << number(secondsSince(start))
+      header << "Where the error lives: eq. 9.9 at the " << nodes << " nodes the view depends on, "
+             << perRun * options.runs << " spp each (--node-spp " << options.nodeSpp
+             << ", at most the image's samples in all) in the same runs, " << number(secondsSince(start))
              << " s with the per-pixel rows drawn from those values; the solution's part is the row against its "
                 "method drawing them, the reconstruction's part that drawing against the reference image.\n";
     }

@@ -17,7 +17,28 @@ RadiosityMesh NodalReference::withRun(const RadiosityMesh& mesh, int run) const 
   return copy;
 }
 
-NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun) {
+std::vector<char> nodesOfTheView(const RadiosityMesh& mesh, const std::vector<int32_t>& elementAt) {
+  std::vector<char> seen(mesh.elements.size(), 0), node(mesh.nodes.size(), 0);
+  for (int32_t e : elementAt)
+    if (e >= 0) seen[size_t(e)] = 1;
+  auto nodesOf = [&](size_t e, auto&& visit) {
+    for (const auto* nodes : {&mesh.elements[e].corners, &mesh.elements[e].midEdge})
+      for (uint32_t n : *nodes) visit(n);
+  };
+  for (size_t e = 0; e < mesh.elements.size(); ++e)
+    if (seen[e]) nodesOf(e, [&](uint32_t n) { node[n] = 1; });
+  std::vector<char> wanted = node;
+  for (size_t e = 0; e < mesh.elements.size(); ++e) {
+    bool touches = false;
+    nodesOf(e, [&](uint32_t n) { touches = touches || node[n]; });
+    if (touches) nodesOf(e, [&](uint32_t n) { wanted[n] = 1; });
+  }
+  return wanted;
+}
+
+NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun,
+                             const std::vector<char>& wanted) {
+  RADVIEW_CHECK(wanted.empty() || wanted.size() == mesh.nodes.size());
   const int runs = gather.settings().runs;
   constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> elementOf(mesh.nodes.size(), kNone);
@@ -34,7 +55,7 @@ NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gathe
       [&](size_t n) {
         const uint32_t element = elementOf[n];
         for (int r = 0; r < runs; ++r) reference.B[n * size_t(runs) + size_t(r)] = mesh.nodes[n].B;
-        if (element == kNone) return;
+        if (element == kNone || (!wanted.empty() && !wanted[n])) return;
         Vec3 centroid(0.0);
         for (uint32_t c : mesh.elements[element].corners) centroid += mesh.nodes[c].position;
         centroid /= double(mesh.elements[element].corners.size());

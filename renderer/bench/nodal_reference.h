@@ -20,10 +20,17 @@ struct NodalReference {
   RadiosityMesh withRun(const RadiosityMesh& mesh, int run) const;
 };
 
-// `samplesPerRun` samples of eq. 9.9 at every node, in each of the gather's runs, on all cores.
-// A node is gathered at a point just inside the first element that uses it, from that
-// element's front: on a discontinuity edge (C-1) the node of each side then takes its own
-// side's limit, not the average of both.
-NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun);
+// `samplesPerRun` samples of eq. 9.9 at each node `wanted` says (all when it is empty), in each
+// of the gather's runs, on all cores; the others keep their own B. A node is gathered at a
+// point just inside the first element that uses it, from that element's front: on a
+// discontinuity edge (C-1) the node of each side then takes its own side's limit, not the
+// average of both.
+NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun,
+                             const std::vector<char>& wanted = {});
+
+// The nodes a view's picture depends on: those of the elements seen (elementAt, as
+// visibleElements gives it) and of every element that shares a node with one of those, whose
+// values the C1 methods' vertex gradients read.
+std::vector<char> nodesOfTheView(const RadiosityMesh& mesh, const std::vector<int32_t>& elementAt);
 
 }  // namespace radview
