@@ -1,9 +1,9 @@
 #pragma once
 // How far a row is from what its reference converges to, when the reference is noisy: the
 // yardstick of `radview bench`. The reference comes as K independent estimates of the same
-// image (its passes, each with its own sample sequence). For an item i (a pixel, or a stencil
-// of pixels) with the row's value r_i and the passes' values y_i1 .. y_iK of mean m_i and
-// sample variance s_i^2,
+// image (its passes: the final gather's independent runs, each with its own sample
+// sequences). For an item i (a pixel, or a stencil of pixels) with the row's value r_i and the
+// passes' values y_i1 .. y_iK of mean m_i and sample variance s_i^2,
 //     g_i = (r_i - m_i)^2 - s_i^2 / K  =  sum over j != k of (r_i - y_ij)(r_i - y_ik) / (K (K - 1))
 // has expectation (r_i - mu_i)^2, mu_i the reference's expectation: the squared error with the
 // reference's noise taken out. Its mean over the items estimates the row's mean squared error
@@ -16,8 +16,9 @@
 // the U-statistic's variance formula (unbiased for normal passes; the jackknife, which needs
 // no such assumption, is far too wide at K = 4 where the noise is larger than the error); the
 // interval is Student's t with Welch-Satterthwaite's effective degrees of freedom, which are
-// about the item count when no few items dominate, and fall towards K - 1 when they do. Resampling blocks of pixels
-// instead would measure how the error varies across the image, not how uncertain the figure is.
+// about the item count when no few items dominate, and fall towards K - 1 when they do.
+// Resampling blocks of pixels instead would measure how the error varies across the image,
+// not how uncertain the figure is.
 #include <cstddef>
 #include <vector>
 
