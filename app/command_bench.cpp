@@ -90,8 +90,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The ends of the error maps' diverging scale, display steps.
-constexpr double kErrorMapSteps = 10.0;
+// The ends of the error maps' diverging scale, and the red end of the reference's noise map,
+// display steps.
+constexpr double kErrorMapSteps = 10.0, kNoiseMapSteps = 1.0;
 
 // A row rendered: what the table reports of it, and its values for the error estimates.
 struct MeasuredRow {
@@ -398,10 +399,13 @@ int runBench(const BenchOptions& options) {
     gatherReference(finalGather, options, rows, reference, spp, seconds);
     writeLinearImage(reference.mean(), options.outDir + "/reference.exr");
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
+    writePng(magnitudeMap(width, height, reference.pixels(), reference.pixelNoiseSteps(), kNoiseMapSteps),
+             options.outDir + "/reference-noise.png");
     header << "Reference: final gather (C&W eq. 9.9, B^ " << options.gatherInterpolant << ") at each pixel's centre, "
            << spp << " spp in " << options.runs << " independent runs, " << number(seconds) << " s; its noise (RMS, "
            << "over the compared pixels) " << number(reference.noiseLinear()) << " linear, "
-           << number(reference.noiseSteps()) << " display steps.\n";
+           << number(reference.noiseSteps()) << " display steps (reference-noise.png: white 0, red "
+           << kNoiseMapSteps << " step or more).\n";
     if (options.nodeSpp > 0) {
       const auto start = std::chrono::steady_clock::now();
       // Only the nodes the picture depends on, and no more samples at them than the image had:
@@ -486,7 +490,7 @@ int runBench(const BenchOptions& options) {
   std::printf(
       "wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method, one EXR per row and its error "
       "map\n",
-      options.outDir.c_str(), truth ? "" : ", reference.exr");
+      options.outDir.c_str(), truth ? "" : ", reference.exr, reference-noise.png");
   return 0;
 }
 

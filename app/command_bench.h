@@ -14,14 +14,14 @@ struct BenchOptions {
   std::string camera;  // as render --camera
   std::string size = "512x512";
   double exposure = 0.0;
-  int spp = 256;            // the reference's samples per pixel, all runs together
+  int spp = 168;            // the reference's samples per pixel, all runs together
   int runs = 4;             // independent runs of the reference (error_estimate.h): its noise from their spread
   std::string truth;        // a linear image to measure against instead of the gather (exact, no interval)
   double precision = 0.0;   // add passes until every row's interval half-width is below this (steps); 0: --spp
   double maxSeconds = 0.0;  // with --precision: stop adding passes after this long; 0: no limit
-  int nodeSpp = 2048;       // the reference at the nodes, for the error split (nodal_reference.h); 0: none
+  int nodeSpp = 256;        // the reference at the nodes, for the error split (nodal_reference.h); 0: none
   std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
-  int frames = 9;                                   // timed frames per row (median)
+  int frames = 7;                                   // timed frames per row (median)
   double rowSeconds = 3.0;                          // a row's timing stops after this, once 3 frames are in
   std::string levels = "1,2,4,8,16,32,64";          // tessellation levels of the quadratic and C1 methods
   std::string tolerances = "0.5,2";                 // adaptive tessellation tolerances, 8-bit steps

@@ -202,4 +202,10 @@ ErrorEstimate BenchReference::ownJumps(bool c0) const {
 double BenchReference::noiseLinear() const { return std::sqrt(meanNoiseVariance(luminance_, K_)); }
 double BenchReference::noiseSteps() const { return std::sqrt(meanNoiseVariance(display_, K_)); }
 
+std::vector<double> BenchReference::pixelNoiseSteps() const {
+  std::vector<double> noise = noiseVariances(display_, K_);
+  for (double& n : noise) n = std::sqrt(n);
+  return noise;
+}
+
 }  // namespace radview

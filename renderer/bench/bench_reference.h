@@ -74,6 +74,8 @@ class BenchReference {
   // pixels: linear, and in display steps. 0 for an exact reference.
   double noiseLinear() const;
   double noiseSteps() const;
+  // The same per compared pixel (pixels()' order), display steps.
+  std::vector<double> pixelNoiseSteps() const;
 
   int runs() const { return K_; }  // 1 for an exact reference
   const LinearImage& mean() const { return mean_; }

@@ -36,7 +36,7 @@ ErrorEstimate estimateMeanSquaredError(const std::vector<double>& row, const std
   ErrorEstimate estimate;
   estimate.items = row.size();
   if (row.empty()) return estimate;
-  double sum = 0.0, variance = 0.0, varianceSquares = 0.0;
+  double sum = 0.0, variance = 0.0, conservativeVariance = 0.0, varianceSquares = 0.0;
   for (size_t i = 0; i < row.size(); ++i) {
     double s1 = 0.0, s2 = 0.0;
     for (int k = 0; k < K; ++k) {
@@ -61,9 +61,14 @@ ErrorEstimate estimateMeanSquaredError(const std::vector<double>& row, const std
     const double pairTerm = 2.0 * sigma4 / (double(K) * (K - 1));
     const double v = 4.0 / K * (g * s2Passes + pairTerm) + pairTerm;
     variance += v;
+    // The same with g no lower than 0 (as d^2 is): where a few items carry all the noise (a
+    // reference exact elsewhere), their negative g can sum the unbiased variance below zero,
+    // and this conservative one stands in.
+    conservativeVariance += 4.0 / K * (std::max(g, 0.0) * s2Passes + pairTerm) + pairTerm;
     varianceSquares += std::max(v, 0.0) * std::max(v, 0.0);
   }
   const double n = double(row.size());
+  if (!(variance > 0.0)) variance = conservativeVariance;
   estimate.meanSquare = sum / n;
   estimate.standardError = std::sqrt(std::max(variance, 0.0)) / n;
   // Welch-Satterthwaite: each item's variance estimate has about K - 1 degrees of freedom.
@@ -72,10 +77,10 @@ ErrorEstimate estimateMeanSquaredError(const std::vector<double>& row, const std
   return estimate;
 }
 
-double meanNoiseVariance(const std::vector<double>& passes, int K) {
-  if (K < 2 || passes.empty()) return 0.0;
+std::vector<double> noiseVariances(const std::vector<double>& passes, int K) {
+  if (K < 2 || passes.empty()) return std::vector<double>(K < 1 ? 0 : passes.size() / size_t(K), 0.0);
   const size_t items = passes.size() / size_t(K);
-  double sum = 0.0;
+  std::vector<double> variances(items);
   for (size_t i = 0; i < items; ++i) {
     double mean = 0.0, squares = 0.0;
     for (int k = 0; k < K; ++k) mean += passes[i * size_t(K) + size_t(k)];
@@ -84,9 +89,16 @@ double meanNoiseVariance(const std::vector<double>& passes, int K) {
       const double d = passes[i * size_t(K) + size_t(k)] - mean;
       squares += d * d;
     }
-    sum += squares / (K - 1) / K;
+    variances[i] = squares / (K - 1) / K;
   }
-  return sum / double(items);
+  return variances;
+}
+
+double meanNoiseVariance(const std::vector<double>& passes, int K) {
+  const std::vector<double> variances = noiseVariances(passes, K);
+  double sum = 0.0;
+  for (double v : variances) sum += v;
+  return variances.empty() ? 0.0 : sum / double(variances.size());
 }
 
 bool tie(const ErrorEstimate& a, const ErrorEstimate& b) {

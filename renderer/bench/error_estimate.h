@@ -13,7 +13,8 @@
 // is a deterministic render, and the items compared are all of them, not a sample of some
 // larger set). Items are independent (every pixel draws its own sample sequence), so the
 // estimate's variance is the sum of the items' variances, each estimated from its K passes by
-// the U-statistic's variance formula (unbiased for normal passes; the jackknife, which needs
+// the U-statistic's variance formula (unbiased for normal passes; made conservative where the
+// sum comes out below zero; the jackknife, which needs
 // no such assumption, is far too wide at K = 4 where the noise is larger than the error); the
 // interval is Student's t with Welch-Satterthwaite's effective degrees of freedom, which are
 // about the item count when no few items dominate, and fall towards K - 1 when they do.
@@ -43,8 +44,9 @@ struct ErrorEstimate {
 // Error for K = 2 (too few to estimate the variance's own spread) or sizes that do not match.
 ErrorEstimate estimateMeanSquaredError(const std::vector<double>& row, const std::vector<double>& passes, int K);
 
-// The variance of the passes' mean, s_i^2 / K, averaged over the items: the reference's own
-// mean squared noise. 0 for K = 1.
+// The variance of the passes' mean, s_i^2 / K, of each item (0 for K = 1), and its average
+// over the items: the reference's own mean squared noise.
+std::vector<double> noiseVariances(const std::vector<double>& passes, int K);
 double meanNoiseVariance(const std::vector<double>& passes, int K);
 
 // Whether two estimates' 95 % intervals for the root mean square overlap: a tie.

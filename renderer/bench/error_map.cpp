@@ -53,4 +53,16 @@ Image differenceMap(const LinearImage& row, const LinearImage& reference, const 
   return map;
 }
 
+Image magnitudeMap(int width, int height, const std::vector<uint32_t>& pixels, const std::vector<double>& values,
+                   double scaleSteps) {
+  RADVIEW_CHECK(pixels.size() == values.size());
+  Image map{width, height, std::vector<uint8_t>(size_t(width) * size_t(height) * 4, 128)};
+  for (size_t i = 3; i < map.rgba.size(); i += 4) map.rgba[i] = 255;
+  for (size_t i = 0; i < pixels.size(); ++i) {
+    const Rgb colour = diverging(std::isfinite(values[i]) ? std::clamp(values[i] / scaleSteps, 0.0, 1.0) : 0.0);
+    for (int c = 0; c < 3; ++c) map.rgba[4 * size_t(pixels[i]) + size_t(c)] = uint8_t(std::lround(255.0 * colour[c]));
+  }
+  return map;
+}
+
 }  // namespace radview

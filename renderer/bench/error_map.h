@@ -18,4 +18,9 @@ LinearImage signedDifference(const LinearImage& row, const LinearImage& referenc
 Image differenceMap(const LinearImage& row, const LinearImage& reference, const std::vector<uint32_t>& pixels,
                     double exposureScale, double scaleSteps);
 
+// Where the reference is noisy: `values[i]` (>= 0, display steps) at pixel pixels[i], on the
+// red half of the same scale (white 0, red `scaleSteps` and above); other pixels mid grey.
+Image magnitudeMap(int width, int height, const std::vector<uint32_t>& pixels, const std::vector<double>& values,
+                   double scaleSteps);
+
 }  // namespace radview

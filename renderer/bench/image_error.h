@@ -9,8 +9,9 @@
 
 namespace radview {
 
-// Whether two elements lie in one plane, to the precision of the positions of a solution file.
-bool coplanarElements(const RadiosityMesh& mesh, size_t a, size_t b);
+// Whether two elements lie in one plane, to the precision of the positions of a solution file;
+// `diagonal` is mesh.bounds().diagonal(), computed once by the caller (it visits every node).
+bool coplanarElements(const RadiosityMesh& mesh, size_t a, size_t b, double diagonal);
 
 // Pixels that see an element (elementAt[p] >= 0, row 0 the top row) whose plane their four
 // neighbours see too: no silhouette or crease, where the reference antialiases (it averages

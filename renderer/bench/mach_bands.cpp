@@ -52,12 +52,13 @@ class EdgeContinuity {
 EdgeStencils edgeStencils(const RadiosityMesh& mesh, const std::vector<int32_t>& elementAt, int width, int height) {
   const EdgeContinuity continuity(mesh);
   std::map<std::pair<int32_t, int32_t>, int> known;
+  const double diagonal = mesh.bounds().diagonal();
   auto classify = [&](int32_t a, int32_t b) {
     const auto [it, added] = known.emplace(std::minmax(a, b), -2);
     if (!added) return it->second;
     const Element &ea = mesh.elements[a], &eb = mesh.elements[b];
     const bool emits = mesh.materials[ea.material].isEmitter() || mesh.materials[eb.material].isEmitter();
-    if (!emits && coplanarElements(mesh, size_t(a), size_t(b)))
+    if (!emits && coplanarElements(mesh, size_t(a), size_t(b), diagonal))
       it->second = continuity.between(uint32_t(a), uint32_t(b));
     return it->second;
   };

@@ -67,9 +67,10 @@ NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gathe
         if (!(length > 0.0)) return;
         const double step = std::min(0.5 * length, std::max(1e-3 * length, 20.0 * lift));
         const Vec3 x = mesh.nodes[n].position + inward * (step / length);
+        const GatherPoint point = gather.gatherPoint(element, x);
         for (int r = 0; r < runs; ++r) {
           Rgb sum(0.0);
-          for (int p = 0; p < samplesPerRun; ++p) sum += gather.samplePoint(element, x, n, p * runs + r);
+          for (int p = 0; p < samplesPerRun; ++p) sum += gather.samplePoint(point, n, p * runs + r);
           reference.B[n * size_t(runs) + size_t(r)] = sum / double(samplesPerRun);
         }
       },

@@ -26,7 +26,7 @@ EmitterSampler::EmitterSampler(const RadiosityMesh& mesh) {
     if (normal == Vec3(0.0)) continue;
     for (const auto& t : triangulatePolygon(corners)) {
       const Triangle triangle{
-          corners[size_t(t[0])], corners[size_t(t[1])], corners[size_t(t[2])], normal, material.E, 0.0};
+          corners[size_t(t[0])], corners[size_t(t[1])], corners[size_t(t[2])], normal, material.E, 0.0, uint32_t(e)};
       const double a = 0.5 * glm::length(glm::cross(triangle.b - triangle.a, triangle.c - triangle.a));
       if (!(a > 0.0)) continue;
       triangles_.push_back(triangle);
@@ -51,7 +51,7 @@ EmitterSample EmitterSampler::sample(double uPick, double u1, double u2) const {
   // Uniform on the triangle (pbrt's UniformSampleTriangle).
   const double s = std::sqrt(u1);
   const double b0 = 1.0 - s, b1 = u2 * s;
-  return {b0 * t.a + b1 * t.b + (1.0 - b0 - b1) * t.c, t.normal, t.E, t.pdfArea};
+  return {b0 * t.a + b1 * t.b + (1.0 - b0 - b1) * t.c, t.normal, t.E, t.pdfArea, t.element};
 }
 
 }  // namespace radview

@@ -17,6 +17,7 @@ struct EmitterSample {
   // its power (area x mean of E's channels), then a point uniformly on it, so pdf = meanE_e /
   // sum over emitters of (A x meanE).
   double pdfArea = 0.0;
+  uint32_t element = 0;  // the mesh element it lies on
 };
 
 class EmitterSampler {
@@ -34,6 +35,7 @@ class EmitterSampler {
     Vec3 a, b, c, normal;
     Rgb E;
     double pdfArea;
+    uint32_t element;
   };
   std::vector<Triangle> triangles_;
   std::vector<double> cumulative_;  // running sum of the triangles' probabilities, the last 1

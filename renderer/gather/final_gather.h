@@ -10,11 +10,16 @@
 // The estimator, per pixel and pass (one sample per pixel per pass):
 //  - the eye ray through a uniformly jittered point of the pixel (so the mean antialiases;
 //    alpha is the fraction of samples that see a surface), or through its centre;
+//  - at a fixed point (GatherPoint: the pixel's centre, as the bench takes it), both parts of the
+//    integral with control variates (control_variates.h): a stand-in for the scene whose
+//    integral, shadows included, is known in closed form, and only the difference is sampled;
 //  - direct light: emitterSamples points on the emitters (EmitterSampler, by power, one-sided),
-//    E_e cos(theta_p) cos(theta_e) / (pi r^2) V / pdf each;
-//  - indirect light: one cosine-weighted direction, contributing B^(x') - E(x') at the surface
-//    it meets (the pdf cos / pi cancels G's cos / pi). Emission is left out there because the
-//    emitters are sampled explicitly: counting it twice would double the direct light.
+//    E_e cos(theta_p) cos(theta_e) / (pi r^2) V / pdf each, less the control's;
+//  - indirect light: cosine-weighted directions (several at a fixed point), each contributing
+//    B^(x') - E(x') at the surface
+//    it meets (the pdf cos / pi cancels G's cos / pi) minus the control's value in that
+//    direction. Emission is left out there because the emitters are sampled explicitly:
+//    counting it twice would double the direct light.
 //
 // Decisions where the book is silent:
 //  - Surfaces are one-sided, as the solver treats them (a polygon seen from behind has form
@@ -30,13 +35,15 @@
 //    data), so clamping only the negative side would add energy and bias the reference.
 //
 // The numbers a sample draws are pass `pass`'s point of a GatherSequence, shifted by the
-// pixel's own word per coordinate: coordinates 0-1 the indirect direction (the sequence's best
-// stratified pair: the integrand that varies most), 2-3 the point in the pixel, then three per
-// emitter sample. Each pixel's samples do not depend on which thread takes them, so the image
+// pixel's own word per coordinate: coordinates 0-1 the indirect directions (the sequence's best
+// stratified pair, for the integrand that varies most: direction j of pass p takes point 2p + j
+// there), 2-3 the point in the pixel, then four per emitter sample (the emitter, the point on
+// it, whether its shadow ray is cast). Each pixel's samples do not depend on which thread takes them, so the image
 // is bit-identical for any thread count.
 #include "core/camera.h"
 #include "core/image.h"
 #include "gather/camera_rays.h"
+#include "gather/control_variates.h"
 #include "gather/emitter_sampler.h"
 #include "gather/gather_sequence.h"
 #include "interp/interpolant.h"
@@ -75,6 +82,19 @@ struct PixelSample {
   uint32_t rays = 0;  // rays cast for it
 };
 
+// A surface point eq. 9.9 is estimated at, seen from the front of its element. A fixed point
+// (gatherPoint: a pixel's centre, a node) takes every pass, so what it costs once pays off: it
+// carries the controls' integrals there, and each pass samples several indirect directions. A
+// point that one sample alone sees (a jittered eye ray) is estimated plainly: no controls, one
+// direction, every shadow ray cast.
+struct GatherPoint {
+  uint32_t element = 0;
+  Vec3 position{0.0};
+  bool fixed = false;
+  Rgb controlled{0.0};  // fixed: the controls' integrals (SceneControl::integral)
+  uint64_t facing = 0;  // fixed: the hulls in front of it (SceneControl::facing)
+};
+
 class FinalGather {
  public:
   // The mesh must outlive the gather. Throws Error for a size below 1x1, emitterSamples below 1,
@@ -100,19 +120,25 @@ class FinalGather {
 
   // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
   PixelSample samplePixel(int x, int y, int pass) const;
-  // Sample number `pass` of eq. 9.9 at a surface point x of `element`, seen from its front,
-  // its numbers those of point `index` (of the gather's run pass mod runs): independent of
-  // every pixel's and every other index's. Thread-safe.
-  Rgb samplePoint(uint32_t element, const Vec3& x, uint64_t index, int pass) const;
+  // A surface point x of `element`, to be seen from its front. Thread-safe.
+  GatherPoint gatherPoint(uint32_t element, const Vec3& x) const;
+  // Sample number `pass` of eq. 9.9 at that point, its numbers those of point `index` (of the
+  // gather's run pass mod runs): independent of every pixel's and every other index's.
+  // Thread-safe.
+  Rgb samplePoint(const GatherPoint& point, uint64_t index, int pass) const;
 
  private:
-  // samplePixel with the pass's point formed (GatherSequence::point), as addPasses forms it once.
+  std::vector<uint32_t> passWords(uint32_t pass) const;
+  // samplePixel with the pass's words formed (passWords), as addPasses forms them once.
   PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const;
-  Rgb radiosityAt(uint32_t element, const Vec3& x, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
+  Rgb radiosityAt(const GatherPoint& point, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
   // What pixel (x, y)'s centre sees: cast once, at the first pass (pixelCentres).
   std::optional<RayHit> centreHit(int x, int y) const;
-  Rgb directLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
-  Rgb indirectLight(const Vec3& x, const Vec3& n, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
+  // The parts of the direct and indirect light the controls leave to sampling.
+  Rgb directResidual(const GatherPoint& point, const Vec3& n, const GatherSequence::PixelPoint& u,
+                     uint32_t& rays) const;
+  Rgb indirectResidual(const GatherPoint& point, const Vec3& n, const GatherSequence::PixelPoint& u,
+                       uint32_t& rays) const;
 
   const RadiosityMesh& mesh_;
   GatherSettings settings_;
@@ -120,12 +146,14 @@ class FinalGather {
   std::unique_ptr<RayCaster> caster_;  // over the mesh's elements: polygon i is element i
   std::vector<Vec3> normals_;          // unit normal of each element
   EmitterSampler emitters_;
+  SceneControl control_;
   CameraRays cameraRays_;
   GatherSequence sequence_;
   // Per run, per pixel: sum of B over covered samples (RGB), covered count.
   std::vector<double> sum_;
   std::vector<PixelSample> pass_;
   std::vector<std::optional<RayHit>> centreHits_;  // per pixel, with pixelCentres
+  std::vector<GatherPoint> centrePoints_;          // of each front hit, with pixelCentres
   int passes_ = 0;
   uint64_t rays_ = 0;
 };

@@ -19,9 +19,11 @@ class GatherSequence {
  public:
   // Throws Error when `dimensions` is outside 1..the direction numbers Boost holds (3667).
   explicit GatherSequence(int dimensions);
+  int dimensions() const { return dimensions_; }
 
   // Pass `pass`'s point before any shift, coordinate d as the word d / 2^32: the same for every
-  // pixel, so a pass forms it once. Passes 2^16 apart take the same point (under other shifts).
+  // pixel, so a pass forms it once. Indices 2^18 apart take the same point (PixelPoint shifts
+  // passes that far apart differently).
   std::vector<uint32_t> point(uint32_t pass) const;
 
   // One pixel's coordinates of a pass's point, for gather `seed` and its independent run `run`
@@ -31,7 +33,12 @@ class GatherSequence {
     // `point` (GatherSequence::point(pass)) must outlive this.
     PixelPoint(const std::vector<uint32_t>& point, uint64_t seed, uint64_t pixel, uint32_t pass, uint32_t run = 0);
     double operator()(int dimension) const {  // in [0, 1)
-      return double(words_[dimension] ^ uint32_t(shifts_.at(uint64_t(dimension)) >> 32)) * 0x1.0p-32;
+      return (*this)(dimension, dimension);
+    }
+    // Word `word` of the point under coordinate `dimension`'s shift: another index's point in
+    // that coordinate, appended to the words, keeps the joint strata of the shifted sequence.
+    double operator()(int word, int dimension) const {
+      return double(words_[word] ^ uint32_t(shifts_.at(uint64_t(dimension)) >> 32)) * 0x1.0p-32;
     }
 
    private:
@@ -40,7 +47,7 @@ class GatherSequence {
   };
 
  private:
-  static constexpr int kIndexBits = 16;
+  static constexpr int kIndexBits = 18;
   int dimensions_;
   std::vector<uint32_t> direction_;  // [bit * dimensions + dimension]: the point at index 2^bit
 };

@@ -141,4 +141,16 @@ PlaneFrame planeFrame(const std::vector<Vec3>& vertices) {
   return frame;
 }
 
+void clipToHalfSpace(const std::vector<Vec3>& polygon, const Vec3& point, const Vec3& m, std::vector<Vec3>& kept) {
+  kept.clear();
+  for (size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3& P = polygon[i];
+    const Vec3& Q = polygon[(i + 1) % polygon.size()];
+    const double dP = glm::dot(m, P - point), dQ = glm::dot(m, Q - point);
+    if (dP >= 0.0) kept.push_back(P);
+    // dP - dQ is nonzero when exactly one of them is negative: the crossing lies on the edge.
+    if ((dP >= 0.0) != (dQ >= 0.0)) kept.push_back(P + (dP / (dP - dQ)) * (Q - P));
+  }
+}
+
 }  // namespace radview

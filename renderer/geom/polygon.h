@@ -38,4 +38,9 @@ struct PlaneFrame {
 };
 PlaneFrame planeFrame(const std::vector<Vec3>& vertices);
 
+// Sutherland-Hodgman: the part of a convex polygon where dot(m, p - point) >= 0, written to
+// `kept` (cleared first, its storage reused; not `polygon` itself). Fewer than 3 vertices when
+// nothing of it is there.
+void clipToHalfSpace(const std::vector<Vec3>& polygon, const Vec3& point, const Vec3& m, std::vector<Vec3>& kept);
+
 }  // namespace radview

@@ -80,6 +80,16 @@ double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<
   return std::clamp(sum / glm::two_pi<double>(), 0.0, 1.0);
 }
 
+double formFactorAboveHorizon(const Vec3& x, const Vec3& n, const Vec3* polygon, size_t count) {
+  double scale = 0.0;
+  for (size_t i = 0; i < count; ++i) scale = std::max(scale, glm::length(polygon[i] - x));
+  if (!(scale > 0.0)) return 0.0;
+  double sum = 0.0;
+  for (size_t i = 0; i < count; ++i)
+    sum += edgeTerm((polygon[i] - x) / scale, (polygon[(i + 1) % count] - x) / scale, n);
+  return sum / glm::two_pi<double>();
+}
+
 PatchFormFactor::PatchFormFactor(const std::vector<std::vector<Vec3>>& polygons) {
   double largest = 0.0;
   Bounds bounds;

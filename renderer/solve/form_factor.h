@@ -20,6 +20,11 @@ namespace radview {
 // the vertices are finite and n has unit length.
 double pointToPolygonFormFactor(const Vec3& x, const Vec3& n, const std::vector<Vec3>& polygon);
 
+// Lambert's sum alone, for a polygon already clipped to x's horizon (every vertex v has
+// dot(v - x, n) >= 0) and facing x (counter-clockwise about the side x is on): no clipping,
+// no allocation. Not clamped.
+double formFactorAboveHorizon(const Vec3& x, const Vec3& n, const Vec3* polygon, size_t count);
+
 // The same form factor to a shooting patch (one or more non-overlapping polygons in one plane,
 // facing one way), prepared once for the many receivers of a shot: what depends on the patch
 // alone (normals, centroids, its outline) is computed here, not per receiver. Lambert's edge

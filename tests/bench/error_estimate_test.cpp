@@ -117,6 +117,19 @@ TEST(ErrorEstimate, AgainstAnExactReferenceItIsThePlainMeanSquareWithNoInterval)
   EXPECT_EQ(meanNoiseVariance({1.0, 2.5, 2.0}, 1), 0.0);
 }
 
+// A reference exact at most items (a control variate that matches the scene there) and very
+// noisy at a few: the unbiased variance can sum below zero, and the interval must not vanish.
+TEST(ErrorEstimate, AFewNoisyItemsAmongExactOnesStillGiveAnInterval) {
+  constexpr int K = 4;
+  std::vector<double> row(1000, 1.0), passes(row.size() * K, 0.0);
+  for (size_t i = 0; i < 5; ++i)
+    for (int k = 0; k < K; ++k) passes[i * K + size_t(k)] = k % 2 ? 10.0 : -10.0;
+  const ErrorEstimate e = estimateMeanSquaredError(row, passes, K);
+  EXPECT_GT(e.standardError, 0.0);
+  EXPECT_LT(e.rmsLow(), e.rms());
+  EXPECT_GT(e.rmsHigh(), e.rms());
+}
+
 TEST(ErrorEstimate, NoiseVarianceIsTheVarianceOfThePassesMean) {
   // One item, passes 1, 2, 3, 6: sample variance 14 / 3, of the mean 14 / 12.
   EXPECT_DOUBLE_EQ(meanNoiseVariance({1.0, 2.0, 3.0, 6.0}, 4), 14.0 / 12.0);

@@ -68,8 +68,11 @@ TEST(NodalReference, OnlyTheNodesOfTheElementsSeenAndTheirNeighbours) {
   settings.runs = 4;
   const FinalGather gather(mesh, settings);
   const NodalReference reference = gatherAtNodes(mesh, gather, 4, wanted);
-  for (size_t n = 0; n < mesh.nodes.size(); ++n)
-    if (!wanted[n]) EXPECT_EQ(reference.B[n * 4], mesh.nodes[n].B) << n;
+  for (size_t n = 0; n < mesh.nodes.size(); ++n) {
+    if (!wanted[n]) {
+      EXPECT_EQ(reference.B[n * 4], mesh.nodes[n].B) << n;
+    }
+  }
 }
 
 }  // namespace

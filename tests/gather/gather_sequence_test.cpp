@@ -86,10 +86,10 @@ TEST(GatherSequenceTest, PointsAreBoostsSobolPoints) {
   EXPECT_EQ(ours, boost);
 }
 
-TEST(GatherSequenceTest, PassesTwoToTheSixteenApartTakeTheSamePointUnderAnotherShift) {
+TEST(GatherSequenceTest, PassesTwoToTheEighteenApartTakeTheSamePointUnderAnotherShift) {
   const GatherSequence sequence(2);
-  EXPECT_EQ(sequence.point(5), sequence.point(5 + 65536));
-  EXPECT_NE(coordinate(sequence, 1, 7, 5, 0), coordinate(sequence, 1, 7, 5 + 65536, 0));
+  EXPECT_EQ(sequence.point(5), sequence.point(5 + (1u << 18)));
+  EXPECT_NE(coordinate(sequence, 1, 7, 5, 0), coordinate(sequence, 1, 7, 5 + (1u << 18), 0));
 }
 
 TEST(SampleStreamTest, AtIsWhatNextReturnsThatManyCallsLater) {
