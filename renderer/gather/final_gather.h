@@ -16,10 +16,9 @@
 //  - direct light: emitterSamples points on the emitters (EmitterSampler, by power, one-sided),
 //    E_e cos(theta_p) cos(theta_e) / (pi r^2) V / pdf each, less the control's;
 //  - indirect light: cosine-weighted directions (several at a fixed point), each contributing
-//    B^(x') - E(x') at the surface
-//    it meets (the pdf cos / pi cancels G's cos / pi) minus the control's value in that
-//    direction. Emission is left out there because the emitters are sampled explicitly:
-//    counting it twice would double the direct light.
+//    B^(x') - E(x') at the surface it meets (the pdf cos / pi cancels G's cos / pi) less the
+//    control's value in that direction. Emission is left out there because the emitters are
+//    sampled explicitly: counting it twice would double the direct light.
 //
 // Decisions where the book is silent:
 //  - Surfaces are one-sided, as the solver treats them (a polygon seen from behind has form
@@ -36,10 +35,10 @@
 //
 // The numbers a sample draws are pass `pass`'s point of a GatherSequence, shifted by the
 // pixel's own word per coordinate: coordinates 0-1 the indirect directions (the sequence's best
-// stratified pair, for the integrand that varies most: direction j of pass p takes point 2p + j
-// there), 2-3 the point in the pixel, then four per emitter sample (the emitter, the point on
-// it, whether its shadow ray is cast). Each pixel's samples do not depend on which thread takes them, so the image
-// is bit-identical for any thread count.
+// stratified pair, for the integrand that varies most: at a fixed point, direction j of pass p
+// takes point k p + j there), 2-3 the point in the pixel, then four per emitter sample (the
+// emitter, the point on it, whether its shadow ray is cast). Each pixel's samples do not depend
+// on which thread takes them, so the image is bit-identical for any thread count.
 #include "core/camera.h"
 #include "core/image.h"
 #include "gather/camera_rays.h"
@@ -120,7 +119,8 @@ class FinalGather {
 
   // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
   PixelSample samplePixel(int x, int y, int pass) const;
-  // A surface point x of `element`, to be seen from its front. Thread-safe.
+  // A fixed surface point x of `element`, seen from its front, with the controls' integrals
+  // there (a clipped Lambert sum per hull: form it once for all its samples). Thread-safe.
   GatherPoint gatherPoint(uint32_t element, const Vec3& x) const;
   // Sample number `pass` of eq. 9.9 at that point, its numbers those of point `index` (of the
   // gather's run pass mod runs): independent of every pixel's and every other index's.
