@@ -1,5 +1,8 @@
 #include "app/background_gather.h"
 
+#include "gather/path_tracer.h"
+#include "gather/visible_elements.h"
+
 #include <algorithm>
 #include <chrono>
 
@@ -13,6 +16,17 @@ using Clock = std::chrono::steady_clock;
 constexpr int kPreviewDivisor = 4;  // the preview's pixels are 4x4 of the window's
 constexpr int kPreviewSpp = 4;      // a quarter of one full-resolution pass in all
 
+std::unique_ptr<ProgressiveImage> estimate(const RadiosityMesh& mesh, const GatherSettings& settings,
+                                           const std::optional<Scene>& pathTraced) {
+  if (!pathTraced) return std::make_unique<FinalGather>(mesh, settings);
+  PathTraceSettings traced;
+  traced.seed = settings.seed;
+  traced.width = settings.width;
+  traced.height = settings.height;
+  traced.camera = settings.camera;
+  return std::make_unique<PathTracer>(pathTraced->polygons.empty() ? elementScene(mesh) : *pathTraced, traced);
+}
+
 }  // namespace
 
 BackgroundGather::~BackgroundGather() {
@@ -24,7 +38,7 @@ void BackgroundGather::join() {
   if (worker_.joinable()) worker_.join();
 }
 
-void BackgroundGather::start(const RadiosityMesh& mesh, const GatherSettings& settings) {
+void BackgroundGather::start(const RadiosityMesh& mesh, const GatherSettings& settings, const Scene* pathTraced) {
   cancel();
   join();
   {
@@ -36,7 +50,9 @@ void BackgroundGather::start(const RadiosityMesh& mesh, const GatherSettings& se
   }
   cancelled_ = false;
   settings_ = settings;
-  worker_ = std::thread(&BackgroundGather::run, this, mesh, settings);
+  pathTrace_ = pathTraced != nullptr;
+  worker_ = std::thread(&BackgroundGather::run, this, mesh, settings,
+                        pathTraced ? std::optional<Scene>(*pathTraced) : std::nullopt);
 }
 
 void BackgroundGather::cancel() {
@@ -83,7 +99,7 @@ bool BackgroundGather::waitForWork(int spp) {
   return !cancelled_;
 }
 
-void BackgroundGather::run(RadiosityMesh mesh, GatherSettings settings) {
+void BackgroundGather::run(RadiosityMesh mesh, GatherSettings settings, std::optional<Scene> pathTraced) {
   // Below the frame loop's priority, it and the pass threads it starts (Linux's nice value is
   // per thread and inherited): the gather takes every core, and the window must still draw.
   setpriority(PRIO_PROCESS, 0, 10);
@@ -117,25 +133,25 @@ void BackgroundGather::run(RadiosityMesh mesh, GatherSettings settings) {
       GatherSettings small = settings;
       small.width = std::max(1, settings.width / kPreviewDivisor);
       small.height = std::max(1, settings.height / kPreviewDivisor);
-      FinalGather preview(mesh, small);
+      const std::unique_ptr<ProgressiveImage> preview = estimate(mesh, small, pathTraced);
       progress.preview = true;
-      while (preview.samplesPerPixel() < kPreviewSpp && waitFor(0) && preview.addPasses(1, &cancelled_) == 1) {
-        progress.rays = previewRays = preview.raysCast();
-        publish(preview.image());
+      while (preview->samplesPerPixel() < kPreviewSpp && waitFor(0) && preview->addPasses(1, &cancelled_) == 1) {
+        progress.rays = previewRays = preview->raysCast();
+        publish(preview->image());
       }
     }
     if (!cancelled_) {
-      FinalGather gather(mesh, settings);
-      while (waitFor(gather.samplesPerPixel()) && gather.addPasses(1, &cancelled_) == 1) {
+      const std::unique_ptr<ProgressiveImage> gather = estimate(mesh, settings, pathTraced);
+      while (waitFor(gather->samplesPerPixel()) && gather->addPasses(1, &cancelled_) == 1) {
         progress.preview = false;
-        progress.spp = gather.samplesPerPixel();
-        progress.rays = previewRays + gather.raysCast();
-        publish(gather.image());
+        progress.spp = gather->samplesPerPixel();
+        progress.rays = previewRays + gather->raysCast();
+        publish(gather->image());
       }
     }
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!cancelled_) progress_.error = std::string("final gather failed: ") + e.what();
+    if (!cancelled_) progress_.error = std::string(pathTraced ? "path tracer" : "final gather") + " failed: " + e.what();
   }
   std::lock_guard<std::mutex> lock(mutex_);
   workerDone_ = true;

@@ -1,6 +1,7 @@
 #pragma once
-// The final gather (C&W §9.3.1, eq. 9.9; renderer/gather/final_gather.h) run beside the viewer's
-// frame loop, as BackgroundSolve runs the solve: a worker thread adds passes of one sample per
+// The final gather (C&W §9.3.1, eq. 9.9; renderer/gather/final_gather.h) or the path tracer
+// (renderer/gather/path_tracer.h) run beside the viewer's frame loop, as BackgroundSolve runs the
+// solve: a worker thread adds passes of one sample per
 // pixel and publishes the mean after each, so the window shows it converging, until it has the
 // samples per pixel asked for (it then waits, keeping its mean, in case more are asked for).
 //
@@ -8,6 +9,7 @@
 // a picture appears within a fraction of a second after the view settles; a full-resolution
 // pass of a 1280x800 window takes about half a second on two cores.
 #include "gather/final_gather.h"
+#include "gather/progressive_image.h"
 #include "mesh/radiosity_mesh.h"
 
 #include <atomic>
@@ -37,14 +39,17 @@ class BackgroundGather {
   BackgroundGather(const BackgroundGather&) = delete;
   BackgroundGather& operator=(const BackgroundGather&) = delete;
 
-  // Starts gathering a copy of `mesh`, after cancelling the gather under way and waiting for
-  // its worker to leave (within one row of a pass, or a gather's set-up).
-  void start(const RadiosityMesh& mesh, const GatherSettings& settings);
+  // Starts gathering a copy of `mesh`, or with `pathTraced` path tracing (which takes only the
+  // settings' size, camera and seed) a copy of its polygons, or of the mesh's elements where it
+  // has none; after cancelling the gather under way and waiting for its worker to leave (within
+  // one row of a pass, or a gather's set-up).
+  void start(const RadiosityMesh& mesh, const GatherSettings& settings, const Scene* pathTraced = nullptr);
   // Stops the gather at once, without waiting for its worker: nothing more of it is published
   // and nothing already published is handed out.
   void cancel();
   // The settings of the gather started last and not cancelled since; nothing if none.
   const std::optional<GatherSettings>& settings() const { return settings_; }
+  bool pathTracing() const { return pathTrace_; }
 
   // Adds passes until the full-resolution mean has `targetSpp` samples per pixel, while not paused.
   void setTarget(int targetSpp, bool paused);
@@ -57,9 +62,7 @@ class BackgroundGather {
   GatherProgress progress() const;
 
  private:
-  void run(RadiosityMesh mesh, GatherSettings settings);
-  // Adds one pass to `gather` and publishes its mean; false when cancelled.
-  bool addPass(FinalGather& gather, bool preview);
+  void run(RadiosityMesh mesh, GatherSettings settings, std::optional<Scene> pathTraced);
   // Waits until a pass is wanted (the target is above `spp` and not paused) or the gather is
   // cancelled; false when cancelled.
   bool waitForWork(int spp);
@@ -67,6 +70,7 @@ class BackgroundGather {
 
   std::thread worker_;
   std::optional<GatherSettings> settings_;
+  bool pathTrace_ = false;
   std::atomic<bool> cancelled_{false};
   mutable std::mutex mutex_;         // guards the fields below
   std::condition_variable changed_;  // the target, pause, cancellation or progress changed

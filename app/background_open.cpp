@@ -33,7 +33,7 @@ void BackgroundOpen::launch(const std::string& path) {
     Result result;
     result.path = path;
     try {
-      result.viewed = openForViewing(path, elementSize, import);
+      result.viewed = openForViewing(path, elementSize, import, kDirectLight);
       result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false);
     } catch (const std::exception& e) {
       result.error = e.what();

@@ -18,6 +18,7 @@
 #include "core/memory_budget.h"
 #include "core/strings.h"
 #include "gather/final_gather.h"
+#include "gather/path_tracer.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
@@ -29,6 +30,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 
@@ -100,6 +102,7 @@ struct MeasuredRow {
   TradeoffRow row;
   RowValues values;
   std::vector<RowValues> fromNodes;  // per pixel: its method drawing each run of the nodal reference
+  bool rayTraced = false;            // the final gather's row (--reference path-trace), not a GL method
 };
 
 // The per-pixel rows drawn again from each run of the nodal reference (bench/nodal_reference.h):
@@ -111,7 +114,7 @@ void splitErrors(gl::MeshRenderer& renderer, const Camera& camera, double exposu
     for (bool isRelaxed : {true, false}) {
       bool loaded = false;
       for (MeasuredRow& m : rows) {
-        if (m.variant.tessellation != 0 || m.variant.relaxed != isRelaxed) continue;
+        if (m.rayTraced || m.variant.tessellation != 0 || m.variant.relaxed != isRelaxed) continue;
         if (!loaded) renderer.setMesh(nodal.withRun(isRelaxed ? relaxed : unrelaxed, k));
         loaded = true;
         gl::RenderSettings settings;
@@ -133,12 +136,13 @@ double widestHalfInterval(const std::vector<MeasuredRow>& rows, const BenchRefer
   return widest;
 }
 
-// The final gather at pixel centres in `runs` independent runs, until `spp` samples per pixel
-// and then, with `precision` > 0, until every row's interval is that narrow (or `maxSeconds`).
-void gatherReference(FinalGather& gather, const BenchOptions& options, const std::vector<MeasuredRow>& rows,
-                     BenchReference& reference, int& spp, double& seconds) {
+// The reference (the final gather or the path tracer) at pixel centres in its independent runs,
+// until `spp` samples per pixel and then, with `precision` > 0, until every row's interval is
+// that narrow (or `maxSeconds`).
+void referenceImage(ProgressiveImage& gather, const BenchOptions& options, const std::vector<MeasuredRow>& rows,
+                    BenchReference& reference, int& spp, double& seconds) {
   const auto start = std::chrono::steady_clock::now();
-  const int runs = gather.settings().runs;
+  const int runs = gather.runs();
   const int target = (options.spp + runs - 1) / runs * runs;
   auto runImages = [&] {
     std::vector<LinearImage> images;
@@ -189,7 +193,19 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   command->add_option("--camera", o.camera, "As render --camera");
   command->add_option("--size", o.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   command->add_option("--exposure", o.exposure, "Exposure in stops")->capture_default_str();
-  command->add_option("--spp", o.spp, "Samples per pixel of the final-gather reference, all runs together")
+  command
+      ->add_option("--reference", o.reference,
+                   "The reference image: gather (eq. 9.9 per pixel over the solution: the interpolants' trade, the "
+                   "solution taken as right) or path-trace (the true image: the solution's error counted too, and "
+                   "the final gather a row like the others)")
+      ->check(CLI::IsMember({"gather", kPathTrace}))
+      ->capture_default_str();
+  command
+      ->add_option("--gather-spp", o.gatherRowSpp,
+                   "--reference path-trace: samples per pixel of the final gather's row (its time and error)")
+      ->check(CLI::Range(1, kMaxGatherSpp))
+      ->capture_default_str();
+  command->add_option("--spp", o.spp, "Samples per pixel of the reference, all runs together")
       ->check(CLI::Range(1, kMaxGatherSpp))
       ->capture_default_str();
   command
@@ -244,8 +260,9 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
                    "Where bench.md, bench.csv, bench.png, reference.exr/.png, each method's PNG and each row's "
                    "linear EXR go")
       ->capture_default_str();
-  command->add_option("--element-size", o.elementSize, "Scenes: element size of the uniform mesh")
+  command->add_option("--element-size", o.elementSize, "Scenes: element size of the mesh (the solve's patches)")
       ->check(CLI::Range(1e-12, 1e12));
+  addSceneLightOptions(*command, o.light);
   return command;
 }
 
@@ -271,8 +288,9 @@ int runBench(const BenchOptions& options) {
   std::filesystem::create_directories(options.outDir, ec);
   if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
-  if (!truth) checkFinalGatherRuns(viewed);  // the reference of every row
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
+  if (!truth)  // the reference of every row
+    checkRayTracingRuns(viewed, options.reference == kPathTrace ? "the path tracer" : "the final gather");
   const RadiosityMesh& mesh = viewed.mesh;
   const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
   const double exposureScale = std::exp2(options.exposure);
@@ -381,11 +399,13 @@ int runBench(const BenchOptions& options) {
   std::ostringstream header;
   header << "radview bench " << options.file << ": " << width << "x" << height << ", camera '"
          << (options.camera.empty() ? "default" : options.camera) << "', exposure " << options.exposure << ".\n";
+  if (!viewed.lighting.empty()) header << "Scene lighting: " << viewed.lighting << ".\n";
   if (truth) {
     reference.setExact(*truth);
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
     header << "Reference: " << options.truth << ", exact: every error below is exact, with no interval.\n";
   } else {
+    const bool pathTrace = options.reference == kPathTrace;
     GatherSettings gather;
     gather.interpolant = methodFromName(options.gatherInterpolant);
     gather.width = width;
@@ -393,19 +413,55 @@ int runBench(const BenchOptions& options) {
     gather.camera = camera;
     gather.runs = options.runs;
     gather.pixelCentres = true;
+    PathTraceSettings traced;
+    traced.width = width;
+    traced.height = height;
+    traced.camera = camera;
+    traced.runs = options.runs;
+    traced.pixelCentres = true;
+    std::unique_ptr<FinalGather> finalGather;
+    std::unique_ptr<PathTracer> tracer;
+    if (pathTrace)
+      tracer = std::make_unique<PathTracer>(tracedSurfaces(viewed), traced);
+    else
+      finalGather = std::make_unique<FinalGather>(mesh, gather);
+    ProgressiveImage& estimate = pathTrace ? static_cast<ProgressiveImage&>(*tracer) : *finalGather;
     int spp = 0;
     double seconds = 0.0;
-    FinalGather finalGather(mesh, gather);
-    gatherReference(finalGather, options, rows, reference, spp, seconds);
+    referenceImage(estimate, options, rows, reference, spp, seconds);
     writeLinearImage(reference.mean(), options.outDir + "/reference.exr");
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
     writePng(magnitudeMap(width, height, reference.pixels(), reference.pixelNoiseSteps(), kNoiseMapSteps),
              options.outDir + "/reference-noise.png");
-    header << "Reference: final gather (C&W eq. 9.9, B^ " << options.gatherInterpolant << ") at each pixel's centre, "
-           << spp << " spp in " << options.runs << " independent runs, " << number(seconds) << " s; its noise (RMS, "
-           << "over the compared pixels) " << number(reference.noiseLinear()) << " linear, "
-           << number(reference.noiseSteps()) << " display steps (reference-noise.png: white 0, red "
+    header << (pathTrace ? std::string("Reference: the path tracer's true image (no solution used)")
+                         : "Reference: final gather (C&W eq. 9.9, B^ " + options.gatherInterpolant + ")")
+           << " at each pixel's centre, " << spp << " spp in " << options.runs << " independent runs, "
+           << number(seconds) << " s; its noise (RMS, over the compared pixels) " << number(reference.noiseLinear())
+           << " linear, " << number(reference.noiseSteps()) << " display steps (reference-noise.png: white 0, red "
            << kNoiseMapSteps << " step or more).\n";
+    if (pathTrace) {
+      // The final gather as one more way to show the solution: its cost and its error against
+      // the truth, which holds the solution's error and the gather's own noise.
+      GatherSettings rowGather = gather;
+      rowGather.runs = 1;
+      const auto start = std::chrono::steady_clock::now();
+      FinalGather rowEstimate(mesh, rowGather);
+      rowEstimate.addPasses(options.gatherRowSpp);
+      MeasuredRow measured;
+      measured.rayTraced = true;
+      measured.row.method = kFinalGather;
+      measured.row.setting = "per pixel, " + std::to_string(options.gatherRowSpp) + " spp";
+      measured.row.frameMs = 1e3 * secondsSince(start);
+      const LinearImage image = rowEstimate.image();
+      writePng(displayedGather(image, exposureScale), options.outDir + "/" + std::string(kFinalGather) + ".png");
+      measured.row.image = rowFileStem(measured.row) + ".exr";
+      writeLinearImage(image, options.outDir + "/" + measured.row.image);
+      measured.values = reference.rowValues(image);
+      rows.push_back(std::move(measured));
+      header << "The final-gather row: eq. 9.9 over the solution (B^ " << options.gatherInterpolant << ") at "
+             << options.gatherRowSpp << " spp (--gather-spp); its time is the CPU's to those samples on all cores, "
+             << "not a GPU frame, and its error includes its own noise.\n";
+    }
     if (options.nodeSpp > 0) {
       const auto start = std::chrono::steady_clock::now();
       // Only the nodes the picture depends on, and no more samples at them than the image had:
@@ -416,10 +472,11 @@ int runBench(const BenchOptions& options) {
       const int perRun = std::max(
           1, int(std::min(double(options.nodeSpp), imageSamples / double(std::max<size_t>(nodes, 1))) / options.runs));
       std::fprintf(stderr, "the reference at %zu nodes, %d spp\n", nodes, perRun * options.runs);
-      const NodalReference nodal = gatherAtNodes(mesh, finalGather, perRun, wanted);
+      const NodalReference nodal = pathTrace ? pathTraceAtNodes(mesh, *tracer, perRun, wanted)
+                                             : gatherAtNodes(mesh, *finalGather, perRun, wanted);
       splitErrors(renderer, camera, exposureScale, width, height, mesh, unrelaxed, nodal, reference, rows);
-      header << "Where the error lives: eq. 9.9 at the " << nodes << " nodes the view depends on, "
-             << perRun * options.runs << " spp each (--node-spp " << options.nodeSpp
+      header << "Where the error lives: " << (pathTrace ? "the true B" : "eq. 9.9") << " at the " << nodes
+             << " nodes the view depends on, " << perRun * options.runs << " spp each (--node-spp " << options.nodeSpp
              << ", at most the image's samples in all) in the same runs, " << number(secondsSince(start))
              << " s with the per-pixel rows drawn from those values; the solution's part is the row against its "
                 "method drawing them, the reconstruction's part that drawing against the reference image.\n";

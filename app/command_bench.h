@@ -1,6 +1,8 @@
 #pragma once
 // radview bench: the speed-versus-accuracy trade of every method and setting on one view of a
-// file, against the per-pixel final gather (C&W §9.3.1) as the reference.
+// file, against the per-pixel final gather (C&W §9.3.1) or the path tracer's true image as the
+// reference.
+#include "app/scene_light.h"
 #include "import/import_options.h"
 
 #include <CLI/CLI.hpp>
@@ -14,7 +16,9 @@ struct BenchOptions {
   std::string camera;  // as render --camera
   std::string size = "512x512";
   double exposure = 0.0;
-  int spp = 168;            // the reference's samples per pixel, all runs together
+  std::string reference = "gather";  // the reference image: gather (eq. 9.9 over the solution) or path-trace
+  int gatherRowSpp = 64;             // --reference path-trace: the final gather's row, samples per pixel
+  int spp = 168;                     // the reference's samples per pixel, all runs together
   int runs = 4;             // independent runs of the reference (error_estimate.h): its noise from their spread
   std::string truth;        // a linear image to measure against instead of the gather (exact, no interval)
   double precision = 0.0;   // add passes until every row's interval half-width is below this (steps); 0: --spp
@@ -31,6 +35,7 @@ struct BenchOptions {
   std::string outDir = "bench";
   double elementSize = 0.0;  // scenes only
   ImportOptions import;      // other tools' meshes
+  SceneLightOptions light;   // scenes: solved first, unless --direct-only
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);

@@ -15,13 +15,14 @@ int runExport(const ExportOptions& options) {
   const std::string ext = lowerExtension(options.out);
   if (ext != ".ply" && ext != ".glb" && ext != ".gltf")
     throw Error(options.out, "unknown output type \"" + ext + "\" (export writes .ply, .glb or .gltf)");
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
   if (ext == ".ply")
     writePly(viewed.mesh, options.out);
   else
     writeSolution(viewed.mesh, options.out, viewed.file.scene.cameras);
   std::cout << options.out << ": " << viewed.mesh.nodes.size() << " nodes, " << viewed.mesh.elements.size()
             << " elements, " << viewed.mesh.discontinuities.size() << " discontinuity edges\n";
+  if (!viewed.lighting.empty()) std::cout << "scene lighting: " << viewed.lighting << "\n";
   return 0;
 }
 

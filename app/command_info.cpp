@@ -51,7 +51,7 @@ void printMesh(const RadiosityMesh& mesh) {
 }  // namespace
 
 int runInfo(const InfoOptions& options) {
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, kDirectLight);
   const LoadedFile& file = viewed.file;
   std::cout << "file: " << file.path << (file.isSolution ? " (radiosity solution)" : " (scene)") << '\n';
   if (!file.isSolution) {

@@ -112,22 +112,31 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 }
 
 int runRender(const RenderOptions& options) {
-  if (options.display.method != kFinalGather && !options.gather.givenWithGlMethod.empty())
-    throw Error(options.gather.givenWithGlMethod + " needs --method final-gather");
+  const std::string& given = options.gather.givenWithGlMethod;
+  const bool gatherOnly = given == "--gather-interpolant" || given == "--emitter-samples";
+  if (!given.empty() && (gatherOnly ? options.display.method != kFinalGather : !isRayTraced(options.display.method)))
+    throw Error(given + (gatherOnly ? " needs --method final-gather" : " needs --method final-gather or path-trace"));
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  if (options.display.method == kFinalGather)
-    checkImageMemory(options.size, width, height, kGatherBytesPerPixel, "the final gather");
+  if (isRayTraced(options.display.method)) {
+    checkRayTracedOptions(options.display, options.gather);  // before a scene's solve, not after
+    checkImageMemory(options.size, width, height, kGatherBytesPerPixel,
+                     options.display.method == kPathTrace ? "the path tracer" : "the final gather");
+  }
   else if (options.display.view == "difference" || !options.linearOut.empty())
     checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
   else
     checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");
-  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import);
+  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import,
+                                           // the path tracer takes the surfaces alone: no solve needed
+                                           options.display.method == kPathTrace ? kDirectLight : options.light);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
-  if (options.display.method == kFinalGather)
-    renderFinalGather(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
+  if (isRayTraced(options.display.method))
+    renderRayTraced(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
   else
     renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
+  if (!viewed.lighting.empty() && options.display.method != kPathTrace)
+    std::printf("scene lighting: %s\n", viewed.lighting.c_str());
   return 0;
 }
 

@@ -117,7 +117,9 @@ int runSample(const SampleOptions& options) {
   interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
   interpolantOptions.useStoredGradients = !options.estimateGradients;
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
+  if (!viewed.lighting.empty())
+    std::fprintf(stderr, "radview: %s: scene lighting: %s\n", options.file.c_str(), viewed.lighting.c_str());
   const RadiosityMesh& mesh = viewed.mesh;
   if (methodInfo(method).viewDependent) {
     int width = 0, height = 0;

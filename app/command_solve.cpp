@@ -1,6 +1,8 @@
 #include "app/command_solve.h"
 
 #include "app/commands.h"
+#include "app/scene_light.h"
+#include "app/solve_progress_bar.h"
 #include "core/camera.h"
 #include "core/strings.h"
 
@@ -28,51 +30,6 @@ namespace radview {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string humanCount(double n) {
-  char text[32];
-  if (n >= 1e9)
-    std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
-  else if (n >= 1e6)
-    std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
-  else if (n >= 1e3)
-    std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
-  else
-    std::snprintf(text, sizeof text, "%.0f", n);
-  return text;
-}
-
-// One line on a terminal, redrawn in place at most 10 times a second. The bar fills as the
-// unshot fraction falls from 1 to the stop fraction, on a log scale (progressive refinement
-// removes a roughly constant factor per sweep of shots).
-class ProgressBar {
- public:
-  ProgressBar(bool enabled, double stopFraction) : enabled_(enabled), stop_(stopFraction) {}
-  void update(const SolveProgress& p, bool force = false) {
-    if (!enabled_) return;
-    const auto now = Clock::now();
-    if (!force && now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    const double done = p.unshotFraction <= stop_ || stop_ <= 0.0
-                            ? 1.0
-                            : std::clamp(std::log(std::max(p.unshotFraction, 1e-300)) / std::log(stop_), 0.0, 1.0);
-    const int width = 24, filled = int(std::lround(done * width));
-    std::fprintf(stderr, "\r[%s%s] shots %zu  unshot %.2f%%  elements %zu  nodes %zu  %s rays/s ",
-                 std::string(filled, '#').c_str(), std::string(width - filled, ' ').c_str(), p.shots,
-                 100.0 * p.unshotFraction, p.elements, p.nodes, humanCount(p.raysPerSecond()).c_str());
-    std::fflush(stderr);
-    drawn_ = true;
-  }
-  void finish() {
-    if (drawn_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  bool enabled_;
-  double stop_;
-  bool drawn_ = false;
-  Clock::time_point last_{};
-};
 
 // The views --view names, each looked at with --view-size pixels. Throws Error naming the option.
 std::vector<SolveView> solveViews(const SolveOptions& options, const Scene& scene) {
@@ -117,9 +74,6 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
       ->add_option("--min-element-size", o.settings.subdivision.minElementSize,
                    "Subdivision splits no element below this size (default: the patch size / 16)")
       ->check(CLI::Range(1e-12, 1e12));
-  command->add_option("--max-elements", o.settings.subdivision.maxElements, "Subdivision stops at this many elements")
-      ->check(CLI::Range(size_t(1), kMaxMeshElements))
-      ->capture_default_str();
   command
       ->add_option("--tolerance", o.settings.subdivision.tolerance,
                    "Subdivision splits elements whose nodal values differ by more than this on display, in 8-bit "
@@ -143,21 +97,7 @@ CLI::App* addSolveCommand(CLI::App& app, SolveOptions& o) {
                     "Cut every element with a T-vertex into triangles through it (Baum et al.) before writing");
   command->add_option("--seed", o.settings.solver.seed, "Seed of the shooter sampling (same seed, same solution)")
       ->capture_default_str();
-  command->add_option("--samples", o.settings.solver.samples, "Shooter samples per node and shot")
-      ->check(CLI::Range(1, kMaxSolverSamples))
-      ->capture_default_str();
-  command
-      ->add_option("--unshot", o.settings.solver.stopUnshotFraction,
-                   "Stop once the unshot power is this fraction of the emitted power")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  command->add_option("--max-shots", o.settings.solver.maxShots, "Stop after this many shots in any case")
-      ->check(CLI::Range(size_t(1), kMaxSolverShots))
-      ->capture_default_str();
-  command->add_flag("--discontinuity-meshing", o.settings.discontinuityMeshing,
-                    "Patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
-                    "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
-                    "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size");
+  addSolverOptions(*command, o.settings);
   command->add_flag("--no-ambient", o.noAmbient,
                     "Write the solution without the ambient term (where the light not yet shot would go)");
   return command;

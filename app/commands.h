@@ -3,6 +3,7 @@
 // function that returns the exit status. Errors are thrown as radview::Error.
 #include "core/limits.h"
 #include "gl/mesh_renderer.h"
+#include "app/scene_light.h"
 #include "import/import_options.h"
 
 #include <cstdint>
@@ -33,7 +34,8 @@ struct DisplayOptions {
   double elementSize = 0.0;            // scenes only; 0 picks a default
 };
 
-// render --method final-gather (C&W §9.3.1).
+// render --method final-gather (C&W §9.3.1) or path-trace: the passes, the seed, and what only the
+// gather takes.
 struct GatherOptions {
   int spp = 16;  // samples (passes) per pixel, 1 .. kMaxGatherSpp
   uint64_t seed = 1;
@@ -42,6 +44,9 @@ struct GatherOptions {
   std::string givenWithGlMethod;        // a gather option given without final-gather, for the error
 };
 constexpr const char* kFinalGather = "final-gather";  // the --method that renders by final gather
+constexpr const char* kPathTrace = "path-trace";      // the --method that renders the truth by path tracing
+// A --method drawn by casting rays on the CPU rather than by the GL renderer.
+inline bool isRayTraced(const std::string& method) { return method == kFinalGather || method == kPathTrace; }
 
 struct RenderOptions {
   std::string file;
@@ -49,6 +54,7 @@ struct RenderOptions {
   std::string size = "1024x768";
   std::string linearOut;  // also write the linear radiosity (e.g. .exr), usable as a reference
   ImportOptions import;
+  SceneLightOptions light;
   DisplayOptions display;
   GatherOptions gather;
 };
@@ -59,13 +65,14 @@ struct InfoOptions {
   ImportOptions import;
 };
 
-// export: a solution (or a scene, meshed and lit as the viewer shows it) to PLY or to a radview
+// export: a solution (or a scene, solved or lit as the viewer shows it) to PLY or to a radview
 // solution file, by the output's extension.
 struct ExportOptions {
   std::string file;
   std::string out;
   double elementSize = 0.0;
   ImportOptions import;
+  SceneLightOptions light;
 };
 
 struct SampleOptions {
@@ -82,6 +89,7 @@ struct SampleOptions {
   double maxDistance = -1.0;           // world points farther from every element are errors
   double elementSize = 0.0;
   ImportOptions import;
+  SceneLightOptions light;
 };
 
 struct ViewerOptions {
@@ -89,8 +97,8 @@ struct ViewerOptions {
   int frames = 0;    // > 0: run that many frames, then exit
   std::string screenshot;
   std::string size = "1280x800";
-  bool solve = false;  // start solving the scene in the background at once
   ImportOptions import;
+  SceneLightOptions light;  // a scene is solved in the background at once, unless directOnly
   DisplayOptions display;
   GatherOptions gather = viewerGather();  // the final gather in the window ('9', --method final-gather)
   bool framesWaitForSpp = false;          // --spp given: the last of --frames waits for the gather to reach it
@@ -127,11 +135,14 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 
 // Throws Error for a gather option out of its range (--spp, --emitter-samples).
 void checkGatherOptions(const GatherOptions& gather);
-// The final gather's image of the viewed file to a PNG at `out` (and its linear radiosity at
-// `linearOut`), with the display options' camera and exposure; prints the path and a summary.
-// Throws Error for a GL-only display option or a bad gather option.
-void renderFinalGather(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather, int width,
-                       int height, const std::string& out, const std::string& linearOut);
+// Throws Error for a display option the GL renderer alone draws, or a gather option out of range.
+void checkRayTracedOptions(const DisplayOptions& display, const GatherOptions& gather);
+// The final gather's or the path tracer's image (display.method) of the viewed file to a PNG at
+// `out` (and its linear radiosity at `linearOut`), with the display options' camera and
+// exposure; prints the path and a summary. Throws Error for a GL-only display option or a bad
+// gather option.
+void renderRayTraced(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& gather, int width,
+                     int height, const std::string& out, const std::string& linearOut);
 
 // "1024x768" -> width, height. Throws Error naming `option`.
 void parseSize(const std::string& text, int& width, int& height, const std::string& option = "--size");

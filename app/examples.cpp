@@ -13,7 +13,8 @@ const std::vector<Example>& bundledExamples() {
        "T-vertices where subdivision stopped (E, D, T show them)",
        Method::CloughTocher},
       {"cornell_box.gltf", "Cornell box, the scene",
-       "the measured geometry and materials, lit directly without shadows; G solves it here", Method::Gouraud},
+       "the measured geometry and materials, solved here as it opens (direct light first); 0 path traces "
+       "the true image", Method::Gouraud},
       {"fig9_8_quad.gltf", "Fig. 9.8: one quad, four values",
        "scanline Gouraud depends on the view: R turns it 45 degrees, the centre goes 0.5 -> 0.8; bilinear (4) "
        "stays 0.5",

@@ -2,6 +2,7 @@
 // Synthesis, §9.2-9.3). This file is the command line; each subcommand lives in its own file.
 #include "app/command_bench.h"
 #include "app/command_solve.h"
+#include "app/scene_light.h"
 #include "app/commands.h"
 #include "app/examples.h"
 #include "app/import_flags.h"
@@ -30,12 +31,13 @@ constexpr const char* kFileHelp =
 
 // `methods`: the --method names the command accepts.
 void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
-  const bool finalGather = std::find(methods.begin(), methods.end(), kFinalGather) != methods.end();
-  command
-      .add_option("--method", d.method,
-                  methodHelp() + std::string(finalGather ? "\n  final-gather: C&W §9.3.1, eq. 9.9 per pixel by ray "
-                                                           "casting, --gather-interpolant under the integral"
-                                                         : ""))
+  auto offers = [&](const char* name) { return std::find(methods.begin(), methods.end(), name) != methods.end(); };
+  std::string help = methodHelp();
+  if (offers(kFinalGather))
+    help += "\n  final-gather: C&W §9.3.1, eq. 9.9 per pixel by ray casting, --gather-interpolant under the integral";
+  if (offers(kPathTrace))
+    help += "\n  path-trace: the true image by path tracing (no solution used): what every method converges to";
+  command.add_option("--method", d.method, help)
       ->check(methodChoice(methods))
       ->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
@@ -103,9 +105,11 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
 
 // The final gather's options; `spp` says what --spp does for the command.
 void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& spp) {
-  command.add_option("--spp", g.spp, "final-gather: " + spp + " (1.." + std::to_string(kMaxGatherSpp) + ")")
+  command
+      .add_option("--spp", g.spp, "final-gather, path-trace: " + spp + " (1.." + std::to_string(kMaxGatherSpp) + ")")
       ->capture_default_str();
-  command.add_option("--seed", g.seed, "final-gather: random seed (same seed, same image)")->capture_default_str();
+  command.add_option("--seed", g.seed, "final-gather, path-trace: random seed (same seed, same image)")
+      ->capture_default_str();
   command
       .add_option("--gather-interpolant", g.interpolant,
                   "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9 (one that "
@@ -139,14 +143,14 @@ int main(int argc, char** argv) {
   ViewerOptions viewer;
   app.add_option("file", viewer.file, kFileHelp);
   addImportOptions(app, viewer.import);
+  addSceneLightOptions(app, viewer.light);
   app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
-  app.add_flag("--solve", viewer.solve,
-               "Solve the scene in the background at once (as radview solve), showing it as it converges");
   // Both the window and render show the GL methods and the final gather.
   std::vector<std::string> methods = methodNames();
   methods.push_back(kFinalGather);
+  methods.push_back(kPathTrace);
   addDisplayOptions(app, viewer.display, methods);
   addGatherOptions(app, viewer.gather,
                    "samples per pixel at which the window's gather stops (key 9 or --method final-gather); "
@@ -156,6 +160,7 @@ int main(int argc, char** argv) {
   CLI::App* renderCommand = app.add_subcommand("render", "Render FILE headless (EGL) to a PNG");
   renderCommand->add_option("file", render.file, kFileHelp)->required();
   addImportOptions(*renderCommand, render.import);
+  addSceneLightOptions(*renderCommand, render.light);
   renderCommand->add_option("--out,-o", render.out, "Output PNG")->capture_default_str();
   renderCommand->add_option("--size", render.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   renderCommand->add_option("--linear-out", render.linearOut,
@@ -178,6 +183,7 @@ int main(int argc, char** argv) {
       "sample", "Print the reconstructed radiosity B and its surface gradient at points (CPU reference)");
   sampleCommand->add_option("file", sample.file, kFileHelp)->required();
   addImportOptions(*sampleCommand, sample.import);
+  addSceneLightOptions(*sampleCommand, sample.light);
   sampleCommand->add_option("--method", sample.method, methodHelp())
       ->check(methodChoice(methodNames()))
       ->capture_default_str();
@@ -220,6 +226,7 @@ int main(int argc, char** argv) {
       ->add_option("--element-size", exportOptions.elementSize, "Scenes: element size of the uniform mesh written")
       ->check(CLI::Range(1e-12, 1e12));
   addImportOptions(*exportCommand, exportOptions.import);
+  addSceneLightOptions(*exportCommand, exportOptions.light);
 
   SolveOptions solve;
   CLI::App* solveCommand = addSolveCommand(app, solve);
@@ -228,7 +235,8 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   viewer.framesWaitForSpp = app.count("--spp") > 0;
-  for (const char* name : {"--spp", "--seed", "--gather-interpolant", "--emitter-samples"})
+  // The final gather's own options first, so that one of them is named where it is misplaced.
+  for (const char* name : {"--gather-interpolant", "--emitter-samples", "--spp", "--seed"})
     if (render.gather.givenWithGlMethod.empty() && renderCommand->count(name) > 0)
       render.gather.givenWithGlMethod = name;
   try {

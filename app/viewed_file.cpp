@@ -1,14 +1,47 @@
 #include "app/viewed_file.h"
 
+#include "app/solve_progress_bar.h"
 #include "core/error.h"
+#include "gather/visible_elements.h"
 #include "mesh/topology.h"
 #include "solve/direct_light.h"
 
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <string>
 
 namespace radview {
 
-ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import) {
+namespace {
+
+// The scene solved with `light`'s settings, its progress on a terminal.
+RadiosityMesh solvedScene(const Scene& scene, double elementSize, const SolveSettings& given, std::string& lighting,
+                          double& patchSize) {
+  SolveSettings settings = given;
+  if (elementSize > 0.0) settings.patchSize = elementSize;
+  settings = resolvedFor(scene, settings);
+  ProgressBar bar(isatty(fileno(stderr)) != 0, settings.solver.stopUnshotFraction);
+  SolveSummary summary;
+  const auto start = std::chrono::steady_clock::now();
+  RadiosityMesh mesh = solveRadiosity(scene, settings, summary, [&](const SolveProgress& p) { bar.update(p); });
+  bar.update(summary.progress, true);
+  bar.finish();
+  const SolveProgress& p = summary.progress;
+  char text[256];
+  std::snprintf(text, sizeof text, "radiosity solve%s: %zu shots, %.2f%% unshot, %zu elements, %.1f s",
+                settings.discontinuityMeshing ? " with discontinuity meshing" : "", p.shots, 100.0 * p.unshotFraction,
+                mesh.elements.size(), std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  lighting = text;
+  patchSize = settings.patchSize;
+  return mesh;
+}
+
+}  // namespace
+
+ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import,
+                          const SceneLightOptions& light) {
   ViewedFile viewed;
   viewed.file = loadFile(path, import);
   // Meshing, lighting and topology report problems without knowing the file: name it here,
@@ -17,9 +50,13 @@ ViewedFile openForViewing(const std::string& path, double elementSize, const Imp
     if (viewed.file.isSolution) {
       viewed.mesh = std::move(viewed.file.mesh);  // one copy, not two
       viewed.file.mesh = {};
-    } else {
+    } else if (light.directOnly) {
       viewed.elementSize = elementSize > 0.0 ? elementSize : defaultElementSize(viewed.file.scene);
       viewed.mesh = meshAndLight(viewed.file.scene, viewed.elementSize);
+      viewed.lighting = kDirectOnlyLabel;
+      viewed.directLightOnly = true;
+    } else {
+      viewed.mesh = solvedScene(viewed.file.scene, elementSize, light.solve, viewed.lighting, viewed.elementSize);
     }
     viewed.tVertexCount = MeshTopology(viewed.mesh).tVertices().size();
   } catch (const Error& e) {
@@ -29,10 +66,18 @@ ViewedFile openForViewing(const std::string& path, double elementSize, const Imp
   return viewed;
 }
 
-void checkFinalGatherRuns(const ViewedFile& viewed) {
+Scene tracedSurfaces(const ViewedFile& viewed) {
+  return viewed.file.scene.polygons.empty() ? elementScene(viewed.mesh) : viewed.file.scene;
+}
+
+void checkRayTracingRuns(const ViewedFile& viewed, const std::string& method) {
   if (!viewed.file.gatherRefusal.empty())
-    throw Error(viewed.file.path, "the final gather cannot run: " + viewed.file.gatherRefusal +
+    throw Error(viewed.file.path, method + " cannot run: " + viewed.file.gatherRefusal +
                                       "; the interpolants work on it (--method gouraud, clough-tocher, ...)");
+  if (viewed.directLightOnly && method == "the final gather")
+    throw Error(viewed.file.path, "the final gather cannot run with --direct-only: eq. 9.9 would gather from direct "
+                                  "light alone, which the scene does not have (leave --direct-only out to solve the "
+                                  "scene first, or use --method path-trace, which needs no solution)");
 }
 
 }  // namespace radview

@@ -73,10 +73,17 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   std::fprintf(stderr, "radview: no display (%s); rendering headless instead\n", glfwFailure.c_str());
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  if (options.display.method == kFinalGather)
-    renderFinalGather(viewed, options.display, options.gather, width, height, out, "");
+  // The window would have solved a scene in the background; the render solves it first.
+  const bool solve = !viewed.file.isSolution && !options.light.directOnly && options.display.method != kPathTrace;
+  const ViewedFile lit =
+      solve ? openForViewing(options.file, options.display.elementSize, options.import, options.light) : ViewedFile{};
+  const ViewedFile& shown = solve ? lit : viewed;
+  if (isRayTraced(options.display.method))
+    renderRayTraced(shown, options.display, options.gather, width, height, out, "");
   else
-    renderHeadless(viewed, options.display, width, height, out);
+    renderHeadless(shown, options.display, width, height, out);
+  if (!shown.lighting.empty() && options.display.method != kPathTrace)
+    std::printf("scene lighting: %s\n", shown.lighting.c_str());
   return 0;
 }
 
@@ -105,6 +112,7 @@ struct ViewerWork {
   BackgroundPieces pieces;
   ViewerGather gather;
   uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
+  SceneLightOptions light;   // a scene opened is solved with these settings, unless directOnly
   ContinuityEditor editor;
   std::unique_ptr<EdgePicker> picker;  // over the shown mesh's elements; made at the first pick
 
@@ -198,6 +206,7 @@ struct ViewerWork {
         ++meshVersion;
         adoptViewedFile(state, std::move(*opened->viewed));
         meshReplaced(state);
+        state.solveRequested = !light.directOnly && !state.viewed.file.isSolution;
       } catch (const std::exception& e) {
         state.status = e.what();
       }
@@ -209,7 +218,7 @@ struct ViewerWork {
   void handleSolve(ViewerState& state, int width, int height) {
     if (state.solveRequested) {
       state.solveRequested = false;
-      SolveSettings settings;
+      SolveSettings settings = light.solve;
       if (state.solveForView && width > 0 && height > 0)
         settings.subdivision.views = {{framedFor(state.camera, double(width) / height), width, height, "the window's"}};
       solve.start(state.viewed.file.scene, settings);
@@ -224,6 +233,7 @@ struct ViewerWork {
         ++meshVersion;
         state.viewed.tVertexCount = renderer.tVertexCount();
         state.viewed.mesh = std::move(*solved);
+        state.viewed.directLightOnly = false;
         meshReplaced(state);
       } catch (const std::exception& e) {
         state.status = e.what();
@@ -254,11 +264,20 @@ struct ViewerWork {
     try {
       fitClipPlanes(state.camera, state.viewed.mesh.bounds());
       const Camera framed = framedFor(state.camera, double(width) / height);
-      if (state.gather.on && !state.viewed.file.gatherRefusal.empty()) {
+      // The final gather waits for a scene's solve to publish a solution: over direct light alone
+      // it would show light the scene does not have.
+      const bool awaitingSolution =
+          state.gather.on && !state.gather.pathTrace && state.viewed.directLightOnly && (state.solving || state.solveRequested);
+      if (state.gather.on && !awaitingSolution &&
+          (!state.viewed.file.gatherRefusal.empty() || (!state.gather.pathTrace && state.viewed.directLightOnly))) {
         state.gather.on = false;
-        checkFinalGatherRuns(state.viewed);
+        checkRayTracingRuns(state.viewed, state.gather.pathTrace ? "the path tracer" : "the final gather");
       }
-      gather.update(state.gather, state.viewed.mesh, meshVersion, framed, width, height, renderer, waitForSpp);
+      GatherControls shown = state.gather;
+      if (awaitingSolution) shown.on = false;
+      gather.update(shown, state.viewed.mesh, state.viewed.file.scene, meshVersion, framed, width, height, renderer,
+                    waitForSpp);
+      if (!awaitingSolution) state.gather.progress = shown.progress;
       const gl::RenderSettings drawn =
           piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
       renderer.render(framed, drawn, width, height);
@@ -337,8 +356,11 @@ int runViewer(const ViewerOptions& options) {
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
   checkGatherOptions(options.gather);
 
-  ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import);
-  if (options.display.method == kFinalGather) checkFinalGatherRuns(viewed);
+  ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import, kDirectLight);
+  // A scene's final gather waits for the solve that starts with the window.
+  const bool solveComing = !viewed.file.isSolution && !options.light.directOnly;
+  if (options.display.method == kPathTrace || (options.display.method == kFinalGather && !solveComing))
+    checkRayTracingRuns(viewed, options.display.method == kPathTrace ? "the path tracer" : "the final gather");
 
   glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
   if (!glfwInit()) {
@@ -361,12 +383,14 @@ int runViewer(const ViewerOptions& options) {
   glfwSwapInterval(1);
 
   ViewerState state;
-  // With --method final-gather the GL method is the default one, drawn while the view moves.
-  const bool finalGather = options.display.method == kFinalGather;
+  // With --method final-gather or path-trace the GL method is the default one, drawn while the
+  // view moves.
+  const bool rayTraced = isRayTraced(options.display.method);
   DisplayOptions glDisplay = options.display;
-  if (finalGather) glDisplay.method = DisplayOptions().method;
+  if (rayTraced) glDisplay.method = DisplayOptions().method;
   state.settings = settingsFrom(glDisplay);
-  state.gather.on = finalGather;
+  state.gather.on = rayTraced;
+  state.gather.pathTrace = options.display.method == kPathTrace;
   state.gather.interpolant = methodFromName(options.gather.interpolant);
   state.gather.emitterSamples = options.gather.emitterSamples;
   state.gather.seed = options.gather.seed;
@@ -382,7 +406,10 @@ int runViewer(const ViewerOptions& options) {
         cameraFromSpec(options.display.camera, state.viewed.mesh.bounds(), state.viewed.file.scene.cameras);
   // Interactive only: a run of --frames draws every frame with the method asked for.
   const bool piecesInBackground = options.frames == 0;
-  state.solveRequested = options.solve && !state.viewed.file.isSolution;
+  // A scene is drawn with its direct light at once, and with the light it has as the solve
+  // converges (the panel says which).
+  work.light = options.light;
+  state.solveRequested = !options.light.directOnly && !state.viewed.file.isSolution;
 
   ViewerInput input;
   input.state = &state;

@@ -15,8 +15,8 @@ constexpr auto kSettle = std::chrono::milliseconds(150);
 
 }  // namespace
 
-void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, uint64_t meshVersion,
-                          const Camera& camera, int width, int height, gl::MeshRenderer& renderer, bool waitForTarget) {
+void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, const Scene& scene,
+                          uint64_t meshVersion, const Camera& camera, int width, int height, gl::MeshRenderer& renderer, bool waitForTarget) {
   if (!controls.on) {
     if (gather_.settings()) gather_.cancel();
     renderer.clearShownImage();
@@ -34,13 +34,15 @@ void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, u
   const auto now = Clock::now();
   if (!lastWanted_) {
     changedAt_ = now - kSettle;  // just turned on: start at once
-  } else if (*lastWanted_ != wanted || lastWantedMesh_ != meshVersion) {
+  } else if (*lastWanted_ != wanted || lastWantedMesh_ != meshVersion || lastWantedPathTrace_ != controls.pathTrace) {
     changedAt_ = now;
   }
   lastWanted_ = wanted;
   lastWantedMesh_ = meshVersion;
+  lastWantedPathTrace_ = controls.pathTrace;
 
-  const bool current = gather_.settings() && *gather_.settings() == wanted && gatheredMesh_ == meshVersion;
+  const bool current = gather_.settings() && *gather_.settings() == wanted && gatheredMesh_ == meshVersion &&
+                       gather_.pathTracing() == controls.pathTrace;
   if (!current) {
     if (gather_.settings()) gather_.cancel();
     renderer.clearShownImage();  // its mean is of another view
@@ -48,13 +50,14 @@ void ViewerGather::update(GatherControls& controls, const RadiosityMesh& mesh, u
       // The window may have grown since the start-up check (runViewer): a gather too large for
       // the memory available is turned off and said so, and the GL method drawn instead.
       try {
-        checkMemory("window " + std::to_string(width) + "x" + std::to_string(height), "the final gather",
+        checkMemory("window " + std::to_string(width) + "x" + std::to_string(height),
+                    controls.pathTrace ? "the path tracer" : "the final gather",
                     uint64_t(width) * uint64_t(height) * kGatherBytesPerPixel);
       } catch (const Error&) {
         controls.on = false;
         throw;
       }
-      gather_.start(mesh, wanted);
+      gather_.start(mesh, wanted, controls.pathTrace ? &scene : nullptr);
       gatheredMesh_ = meshVersion;
     }
   }

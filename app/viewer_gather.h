@@ -1,5 +1,6 @@
 #pragma once
-// The final gather in the viewer's window: when it restarts, and what the window shows of it.
+// The final gather or the path tracer in the viewer's window: when it restarts, and what the
+// window shows of it.
 //
 // A gather is of one view: it restarts when the camera, the framebuffer size, the mesh (another
 // file, a solve's new solution) or its own settings change; exposure is not among them, since
@@ -24,7 +25,10 @@ class ViewerGather {
   // view away), and reports its progress in `controls`. `meshVersion` changes whenever `mesh`
   // does. With `waitForTarget`, it first waits for the gather to reach its target (the last
   // frame of --frames with --spp, so that a screenshot shows a known number of samples).
-  void update(GatherControls& controls, const RadiosityMesh& mesh, uint64_t meshVersion, const Camera& camera,
+  // `scene`: the file's polygons, which the path tracer traces in place of the mesh's elements
+  // when there are any (a scene's; a solution's are empty).
+  void update(GatherControls& controls, const RadiosityMesh& mesh, const Scene& scene, uint64_t meshVersion,
+              const Camera& camera,
               int width, int height, gl::MeshRenderer& renderer, bool waitForTarget);
 
  private:
@@ -33,6 +37,7 @@ class ViewerGather {
   uint64_t gatheredMesh_ = 0;                 // the mesh version the gather under way is of
   std::optional<GatherSettings> lastWanted_;  // the view asked for in the last frame
   uint64_t lastWantedMesh_ = 0;
+  bool lastWantedPathTrace_ = false;
   Clock::time_point changedAt_;  // when what is asked for last changed
 };
 

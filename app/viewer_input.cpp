@@ -32,6 +32,11 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   switch (key) {
     case GLFW_KEY_9:
       s.gather.on = true;
+      s.gather.pathTrace = false;
+      break;
+    case GLFW_KEY_0:
+      s.gather.on = true;
+      s.gather.pathTrace = true;
       break;
     case GLFW_KEY_V:
       s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book

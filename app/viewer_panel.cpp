@@ -37,7 +37,7 @@ const std::string& shortcutHelp() {
       keys += std::string(int(info.method) == 4 ? "\n" : " ") + info.key + " " + info.label + ",";
     return keys +
            " 9 the final gather\n"
-           "(eq. 9.9 per pixel, converging), V Clough-Tocher's book / affine variant,\n"
+           "(eq. 9.9 per pixel, converging), 0 the path tracer (the true image, converging), V Clough-Tocher's book / affine variant,\n"
            "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
            "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
            "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
@@ -102,12 +102,14 @@ void drawDifferenceControls(ViewerState& state) {
 // it stops, and how far it has got.
 void drawGatherControls(ViewerState& state) {
   GatherControls& g = state.gather;
-  section("Final gather (C&W 9.3.1, eq. 9.9)");
+  section(g.pathTrace ? "Path tracer (the true image)" : "Final gather (C&W 9.3.1, eq. 9.9)");
   ImGui::PushItemWidth(200);
-  methodCombo("B^ interpolant", g.interpolant, true);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Reconstructs the solution under the integral (the CPU interpolant, as radview sample)");
-  ImGui::SliderInt("Shadow rays per pass", &g.emitterSamples, 1, 16);
+  if (!g.pathTrace) {
+    methodCombo("B^ interpolant", g.interpolant, true);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Reconstructs the solution under the integral (the CPU interpolant, as radview sample)");
+    ImGui::SliderInt("Shadow rays per pass", &g.emitterSamples, 1, 16);
+  }
   ImGui::SliderInt("Stop at, spp", &g.targetSpp, 1, kMaxGatherSpp, "%d", ImGuiSliderFlags_Logarithmic);
   ImGui::PopItemWidth();
   ImGui::Checkbox("Pause", &g.paused);
@@ -247,7 +249,7 @@ void drawPanel(ViewerState& state) {
   const ViewedFile& viewed = state.viewed;
   ImGui::TextWrapped("%s", std::filesystem::path(viewed.file.path).filename().c_str());
   const char* shown = viewed.file.isSolution      ? "solution"
-                      : state.solveStatus.empty() ? "scene (direct light)"
+                      : state.solveStatus.empty() ? "scene (direct light only: no shadows, no interreflection)"
                                                   : "scene (radiosity solve)";
   ImGui::Text("%s: %zu nodes, %zu elements", shown, viewed.mesh.nodes.size(), viewed.mesh.elements.size());
   if (!viewed.file.valueSource.empty()) {
@@ -260,7 +262,10 @@ void drawPanel(ViewerState& state) {
 
   section("Interpolant (C&W 9.2)");
   const int kFinalGatherChoice = int(methodRegistry().size());  // after the methods
-  int method = state.gather.on ? kFinalGatherChoice : static_cast<int>(state.settings.method);
+  const int kPathTraceChoice = kFinalGatherChoice + 1;
+  int method = !state.gather.on         ? static_cast<int>(state.settings.method)
+               : state.gather.pathTrace ? kPathTraceChoice
+                                        : kFinalGatherChoice;
   for (const MethodInfo& info : methodRegistry()) {
     const std::string label = info.label + " [" + info.key + "]";
     if (int(info.method) % 2) ImGui::SameLine(190);
@@ -271,7 +276,12 @@ void drawPanel(ViewerState& state) {
   ImGui::RadioButton("Final gather [9]", &method, kFinalGatherChoice);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("C&W 9.3.1: eq. 9.9 per pixel by ray casting, converging in the background");
-  state.gather.on = method == kFinalGatherChoice;
+  if (kPathTraceChoice % 2) ImGui::SameLine(190);
+  ImGui::RadioButton("Path traced [0]", &method, kPathTraceChoice);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The true image, by path tracing the scene (no solution used): what every method converges to");
+  state.gather.on = method == kFinalGatherChoice || method == kPathTraceChoice;
+  state.gather.pathTrace = method == kPathTraceChoice;
   if (!state.gather.on) state.settings.method = static_cast<Method>(method);
   if (state.settings.method == Method::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);

@@ -19,6 +19,7 @@ namespace radview {
 // the view moves): what the panel and the command line set, and what the gather reports.
 struct GatherControls {
   bool on = false;
+  bool pathTrace = false;  // on: the path tracer's true image instead of the final gather
   Method interpolant = Method::Gouraud;  // B^ under the integral of eq. 9.9
   int emitterSamples = 1;                // shadow rays per pixel per pass
   uint64_t seed = 1;

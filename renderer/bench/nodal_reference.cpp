@@ -36,10 +36,14 @@ std::vector<char> nodesOfTheView(const RadiosityMesh& mesh, const std::vector<in
   return wanted;
 }
 
-NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun,
-                             const std::vector<char>& wanted) {
+namespace {
+
+// `samplesPerRun` samples per run at each node `wanted` says, `samplerAt(element, x, node)`
+// giving a node's sampler: a callable from the pass number to one estimate of B at x.
+template <class SamplerAt>
+NodalReference estimateAtNodes(const RadiosityMesh& mesh, int runs, int samplesPerRun, const std::vector<char>& wanted,
+                               const SamplerAt& samplerAt) {
   RADVIEW_CHECK(wanted.empty() || wanted.size() == mesh.nodes.size());
-  const int runs = gather.settings().runs;
   constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
   std::vector<uint32_t> elementOf(mesh.nodes.size(), kNone);
   for (size_t e = 0; e < mesh.elements.size(); ++e)
@@ -67,15 +71,38 @@ NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gathe
         if (!(length > 0.0)) return;
         const double step = std::min(0.5 * length, std::max(1e-3 * length, 20.0 * lift));
         const Vec3 x = mesh.nodes[n].position + inward * (step / length);
-        const GatherPoint point = gather.gatherPoint(element, x);
+        const auto sample = samplerAt(element, x, uint64_t(n));
         for (int r = 0; r < runs; ++r) {
           Rgb sum(0.0);
-          for (int p = 0; p < samplesPerRun; ++p) sum += gather.samplePoint(point, n, p * runs + r);
+          for (int p = 0; p < samplesPerRun; ++p) sum += sample(p * runs + r);
           reference.B[n * size_t(runs) + size_t(r)] = sum / double(samplesPerRun);
         }
       },
       16);
   return reference;
+}
+
+}  // namespace
+
+NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun,
+                             const std::vector<char>& wanted) {
+  return estimateAtNodes(mesh, gather.settings().runs, samplesPerRun, wanted,
+                         [&](uint32_t element, const Vec3& x, uint64_t node) {
+                           return [&gather, point = gather.gatherPoint(element, x), node](int pass) {
+                             return gather.samplePoint(point, node, pass);
+                           };
+                         });
+}
+
+NodalReference pathTraceAtNodes(const RadiosityMesh& mesh, const PathTracer& tracer, int samplesPerRun,
+                                const std::vector<char>& wanted) {
+  return estimateAtNodes(mesh, tracer.settings().runs, samplesPerRun, wanted,
+                         [&](uint32_t element, const Vec3& x, uint64_t node) {
+                           const Material& material = mesh.materials[size_t(mesh.elements[element].material)];
+                           return [&tracer, &material, normal = mesh.elementNormal(element), x, node](int pass) {
+                             return tracer.samplePoint(material, normal, x, node, pass);
+                           };
+                         });
 }
 
 }  // namespace radview

@@ -1,11 +1,12 @@
 #pragma once
 // The reference at the mesh's nodes: eq. 9.9 evaluated at each node, as the final gather
-// evaluates it at each pixel (C&W §9.3.1: the last bounce taken from the solution), in the
-// gather's independent runs. It splits a bench row's error in two: the solution's nodal values
+// evaluates it at each pixel (C&W §9.3.1: the last bounce taken from the solution), or the path
+// tracer's true B there, in the reference's independent runs. It splits a bench row's error in two: the solution's nodal values
 // against these (what the solver brings), and the method drawing these values against the
 // reference image (what the interpolant adds between the nodes, the part a choice of method
 // trades; bench/bench_reference.h).
 #include "gather/final_gather.h"
+#include "gather/path_tracer.h"
 #include "mesh/radiosity_mesh.h"
 
 #include <vector>
@@ -27,6 +28,11 @@ struct NodalReference {
 // average of both.
 NodalReference gatherAtNodes(const RadiosityMesh& mesh, const FinalGather& gather, int samplesPerRun,
                              const std::vector<char>& wanted = {});
+// The same with the truth at each node: the path tracer's estimate of B there (path_tracer.h),
+// which splits a row's error into the solution's and the reconstruction's against the true
+// image rather than against eq. 9.9 over the solution.
+NodalReference pathTraceAtNodes(const RadiosityMesh& mesh, const PathTracer& tracer, int samplesPerRun,
+                                const std::vector<char>& wanted = {});
 
 // The nodes a view's picture depends on: those of the elements seen (elementAt, as
 // visibleElements gives it) and of every element that shares a node with one of those, whose

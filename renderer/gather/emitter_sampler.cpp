@@ -15,13 +15,26 @@ double meanOf(const Rgb& E) { return (E.r + E.g + E.b) / 3.0; }
 }  // namespace
 
 EmitterSampler::EmitterSampler(const RadiosityMesh& mesh) {
+  build(mesh.elements.size(), [&](size_t e) {
+    return std::pair{mesh.cornerPositions(e), &mesh.materials[size_t(mesh.elements[e].material)]};
+  });
+}
+
+EmitterSampler::EmitterSampler(const Scene& scene) {
+  build(scene.polygons.size(), [&](size_t p) {
+    return std::pair{scene.polygons[p].vertices, &scene.materials[size_t(scene.polygons[p].material)]};
+  });
+}
+
+template <class PolygonAt>
+void EmitterSampler::build(size_t count, const PolygonAt& polygonAt) {
   // Choosing an emitter by power, then a point uniformly on it, is the same as choosing one of
   // its triangles by power, then a point uniformly on the triangle: one table does both.
   std::vector<double> power;
-  for (size_t e = 0; e < mesh.elements.size(); ++e) {
-    const Material& material = mesh.materials[size_t(mesh.elements[e].material)];
+  for (size_t e = 0; e < count; ++e) {
+    const auto [corners, materialOf] = polygonAt(e);
+    const Material& material = *materialOf;
     if (!material.isEmitter() || meanOf(material.E) <= 0.0) continue;
-    const std::vector<Vec3> corners = mesh.cornerPositions(e);
     const Vec3 normal = unitNormal(corners);
     if (normal == Vec3(0.0)) continue;
     for (const auto& t : triangulatePolygon(corners)) {
@@ -40,6 +53,12 @@ EmitterSampler::EmitterSampler(const RadiosityMesh& mesh) {
     cumulative_.push_back((cumulative_.empty() ? 0.0 : cumulative_.back()) + power[i] / total);
   }
   if (!cumulative_.empty()) cumulative_.back() = 1.0;
+  totalPower_ = total;
+}
+
+double EmitterSampler::pdfArea(const Rgb& E) const {
+  const double meanE = meanOf(E);
+  return triangles_.empty() || meanE <= 0.0 ? 0.0 : meanE / totalPower_;
 }
 
 EmitterSample EmitterSampler::sample(double uPick, double u1, double u2) const {

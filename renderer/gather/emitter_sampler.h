@@ -3,6 +3,7 @@
 // direct light carries the sharpest shadows, so it is sampled by area on the emitters rather
 // than found by chance through hemisphere directions.
 #include "mesh/radiosity_mesh.h"
+#include "scene/scene.h"
 
 #include <vector>
 
@@ -24,13 +25,23 @@ class EmitterSampler {
  public:
   // The mesh's elements whose material emits; zero-area ones are left out (they emit nothing).
   explicit EmitterSampler(const RadiosityMesh& mesh);
+  // The same over a scene's polygons (EmitterSample::element then names the polygon).
+  explicit EmitterSampler(const Scene& scene);
 
   bool empty() const { return triangles_.empty(); }
   // Three uniforms in [0, 1): the first picks the emitter (and the triangle of it), the other
   // two the point on that triangle. Precondition: !empty().
   EmitterSample sample(double uPick, double u1, double u2) const;
+  // The density per unit area with which sample() draws a point of an emitter of exitance E
+  // (EmitterSample::pdfArea), or 0 for a material it never draws: multiple importance sampling
+  // weighs a direction that met an emitter by it.
+  double pdfArea(const Rgb& E) const;
 
  private:
+  // The emitting ones of `count` polygons, polygonAt(i) giving polygon i's corners and material.
+  template <class PolygonAt>
+  void build(size_t count, const PolygonAt& polygonAt);
+
   struct Triangle {
     Vec3 a, b, c, normal;
     Rgb E;
@@ -39,6 +50,7 @@ class EmitterSampler {
   };
   std::vector<Triangle> triangles_;
   std::vector<double> cumulative_;  // running sum of the triangles' probabilities, the last 1
+  double totalPower_ = 0.0;         // sum over the triangles of area x mean of E's channels
 };
 
 }  // namespace radview

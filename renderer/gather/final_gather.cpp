@@ -27,14 +27,8 @@ constexpr int kIndirectDirections = 4;
 constexpr double kShadowRayChance = 0.25;
 
 GatherSettings checked(const GatherSettings& settings) {
-  if (settings.width < 1 || settings.height < 1)
-    throw Error("final gather: the image size " + std::to_string(settings.width) + "x" +
-                std::to_string(settings.height) + " is empty");
   if (settings.emitterSamples < 1)
     throw Error("final gather: " + std::to_string(settings.emitterSamples) + " emitter samples: expected 1 or more");
-  if (settings.runs < 1 || settings.runs > kMaxGatherRuns)
-    throw Error("final gather: " + std::to_string(settings.runs) + " runs: expected 1 to " +
-                std::to_string(kMaxGatherRuns));
   return settings;
 }
 
@@ -51,16 +45,15 @@ bool operator==(const GatherSettings& a, const GatherSettings& b) {
 }
 
 FinalGather::FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings)
-    : mesh_(mesh),
+    : ProgressiveImage("final gather", settings.width, settings.height, settings.runs),
+      mesh_(mesh),
       settings_(checked(settings)),
       interpolant_(makeInterpolant(mesh, settings.interpolant, settings.interpolantOptions)),
       caster_(std::make_unique<RayCaster>(elementScene(mesh))),
       emitters_(mesh),
       control_(mesh),
       cameraRays_(settings.camera, settings.width, settings.height),
-      sequence_(kEmitterDimension + kPerEmitterSample * settings_.emitterSamples),
-      sum_(size_t(settings_.runs) * size_t(settings.width) * size_t(settings.height) * 4, 0.0),
-      pass_(size_t(settings.width) * size_t(settings.height)) {
+      sequence_(kEmitterDimension + kPerEmitterSample * settings_.emitterSamples) {
   normals_.reserve(mesh.elements.size());
   for (size_t e = 0; e < mesh.elements.size(); ++e) normals_.push_back(mesh.elementNormal(e));
 }
@@ -130,10 +123,6 @@ std::vector<uint32_t> FinalGather::passWords(uint32_t pass) const {
   return words;
 }
 
-PixelSample FinalGather::samplePixel(int x, int y, int pass) const {
-  return sample(x, y, pass, passWords(uint32_t(pass / settings_.runs)));
-}
-
 PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32_t>& point) const {
   const uint64_t pixel = uint64_t(y) * uint64_t(settings_.width) + uint64_t(x);
   const uint32_t run = uint32_t(pass % settings_.runs), passOfRun = uint32_t(pass / settings_.runs);
@@ -190,85 +179,26 @@ std::optional<RayHit> FinalGather::centreHit(int x, int y) const {
   return caster_->closestHit(cameraRays_.through(x + 0.5, y + 0.5));
 }
 
-int FinalGather::addPasses(int passes, const std::atomic<bool>* cancel) {
-  auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
+void FinalGather::prepare() {
+  if (!settings_.pixelCentres) return;
   const int width = settings_.width;
-  if (settings_.pixelCentres && centreHits_.empty() && passes > 0) {
-    std::vector<std::optional<RayHit>> hits(pass_.size());
-    parallelFor(
-        size_t(settings_.height),
-        [&](size_t y) {
-          for (int x = 0; x < width; ++x)
-            hits[y * size_t(width) + size_t(x)] = caster_->closestHit(cameraRays_.through(x + 0.5, y + 0.5));
-        },
-        1);
-    std::vector<GatherPoint> points(hits.size());
-    parallelFor(
-        hits.size(),
-        [&](size_t i) {
-          if (hits[i] && hits[i]->front) points[i] = gatherPoint(uint32_t(hits[i]->polygon), hits[i]->position);
-        },
-        256);
-    centreHits_ = std::move(hits);
-    centrePoints_ = std::move(points);
-  }
-  for (int p = 0; p < passes; ++p) {
-    const std::vector<uint32_t> point = passWords(uint32_t(passes_ / settings_.runs));
-    double* sum = &sum_[size_t(passes_ % settings_.runs) * pass_.size() * 4];
-    parallelFor(
-        size_t(settings_.height),
-        [&](size_t y) {
-          if (cancelled()) return;
-          for (int x = 0; x < width; ++x) pass_[y * size_t(width) + size_t(x)] = sample(x, int(y), passes_, point);
-        },
-        1);
-    if (cancelled()) return p;
-    // Added in pixel order after the pass, so the sums do not depend on the threads either.
-    for (size_t i = 0; i < pass_.size(); ++i) {
-      if (pass_[i].covered) {
-        sum[4 * i + 0] += pass_[i].B.r;
-        sum[4 * i + 1] += pass_[i].B.g;
-        sum[4 * i + 2] += pass_[i].B.b;
-        sum[4 * i + 3] += 1.0;
-      }
-      rays_ += pass_[i].rays;
-    }
-    ++passes_;
-  }
-  return passes;
-}
-
-int FinalGather::passesOfRun(int run) const {
-  return passes_ / settings_.runs + (run < passes_ % settings_.runs ? 1 : 0);
-}
-
-namespace {
-
-// The mean of `runs` runs' sums (final_gather.h's sum_) over `passes` passes in all.
-LinearImage meanOfRuns(const double* sums, int runs, size_t pixels, int passes, int width, int height) {
-  LinearImage image{width, height, std::vector<float>(pixels * 4, 0.0f)};
-  if (passes == 0) return image;
-  for (size_t i = 0; i < pixels; ++i) {
-    double total[4] = {0.0, 0.0, 0.0, 0.0};
-    for (int r = 0; r < runs; ++r)
-      for (int c = 0; c < 4; ++c) total[c] += sums[(size_t(r) * pixels + i) * 4 + size_t(c)];
-    if (total[3] == 0.0) continue;
-    for (int c = 0; c < 3; ++c) image.rgba[4 * i + size_t(c)] = float(total[c] / total[3]);
-    image.rgba[4 * i + 3] = float(total[3] / passes);
-  }
-  return image;
-}
-
-}  // namespace
-
-LinearImage FinalGather::image() const {
-  return meanOfRuns(sum_.data(), settings_.runs, pass_.size(), passes_, settings_.width, settings_.height);
-}
-
-LinearImage FinalGather::runImage(int run) const {
-  RADVIEW_CHECK(run >= 0 && run < settings_.runs);
-  return meanOfRuns(&sum_[size_t(run) * pass_.size() * 4], 1, pass_.size(), passesOfRun(run), settings_.width,
-                    settings_.height);
+  std::vector<std::optional<RayHit>> hits(size_t(width) * size_t(settings_.height));
+  parallelFor(
+      size_t(settings_.height),
+      [&](size_t y) {
+        for (int x = 0; x < width; ++x)
+          hits[y * size_t(width) + size_t(x)] = caster_->closestHit(cameraRays_.through(x + 0.5, y + 0.5));
+      },
+      1);
+  std::vector<GatherPoint> points(hits.size());
+  parallelFor(
+      hits.size(),
+      [&](size_t i) {
+        if (hits[i] && hits[i]->front) points[i] = gatherPoint(uint32_t(hits[i]->polygon), hits[i]->position);
+      },
+      256);
+  centreHits_ = std::move(hits);
+  centrePoints_ = std::move(points);
 }
 
 }  // namespace radview

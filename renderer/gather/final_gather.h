@@ -45,11 +45,11 @@
 #include "gather/control_variates.h"
 #include "gather/emitter_sampler.h"
 #include "gather/gather_sequence.h"
+#include "gather/progressive_image.h"
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
 #include "solve/ray_caster.h"
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -74,13 +74,6 @@ struct GatherSettings {
 bool operator==(const GatherSettings& a, const GatherSettings& b);
 inline bool operator!=(const GatherSettings& a, const GatherSettings& b) { return !(a == b); }
 
-// One sample of one pixel: B at the surface seen, or nothing seen.
-struct PixelSample {
-  Rgb B{0.0};
-  bool covered = false;
-  uint32_t rays = 0;  // rays cast for it
-};
-
 // A surface point eq. 9.9 is estimated at, seen from the front of its element. A fixed point
 // (gatherPoint: a pixel's centre, a node) takes every pass, so what it costs once pays off: it
 // carries the controls' integrals there, and each pass samples several indirect directions. A
@@ -94,31 +87,14 @@ struct GatherPoint {
   uint64_t facing = 0;  // fixed: the hulls in front of it (SceneControl::facing)
 };
 
-class FinalGather {
+class FinalGather : public ProgressiveImage {
  public:
   // The mesh must outlive the gather. Throws Error for a size below 1x1, emitterSamples below 1,
   // or an interpolant the mesh cannot support.
   FinalGather(const RadiosityMesh& mesh, const GatherSettings& settings);
 
-  // Adds up to `passes` passes of one sample per pixel, on all cores, and returns how many were
-  // added. When `cancel` becomes true the pass under way is dropped (the image keeps whole
-  // passes only) and fewer are returned. One thread at a time may call the non-const members.
-  int addPasses(int passes, const std::atomic<bool>* cancel = nullptr);
-
-  int samplesPerPixel() const { return passes_; }
-  uint64_t raysCast() const { return rays_; }
   const GatherSettings& settings() const { return settings_; }
 
-  // The mean so far: RGB the mean B over the samples that saw a surface (not premultiplied, as
-  // the GL renderer's linear image), alpha the fraction of samples that saw one. Row 0 is the top.
-  LinearImage image() const;
-  // The same over the passes of one run (0 .. settings().runs - 1).
-  LinearImage runImage(int run) const;
-  // The passes each run has had: whole rounds when samplesPerPixel() is a multiple of runs.
-  int passesOfRun(int run) const;
-
-  // Sample number `pass` of pixel (x, y), exactly as addPasses takes it.
-  PixelSample samplePixel(int x, int y, int pass) const;
   // A fixed surface point x of `element`, seen from its front, with the controls' integrals
   // there (a clipped Lambert sum per hull: form it once for all its samples). Thread-safe.
   GatherPoint gatherPoint(uint32_t element, const Vec3& x) const;
@@ -128,9 +104,10 @@ class FinalGather {
   Rgb samplePoint(const GatherPoint& point, uint64_t index, int pass) const;
 
  private:
-  std::vector<uint32_t> passWords(uint32_t pass) const;
-  // samplePixel with the pass's words formed (passWords), as addPasses forms them once.
-  PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const;
+  std::vector<uint32_t> passWords(uint32_t pass) const override;
+  PixelSample sample(int x, int y, int pass, const std::vector<uint32_t>& point) const override;
+  // What each pixel's centre sees, and its fixed point, cast once (pixelCentres).
+  void prepare() override;
   Rgb radiosityAt(const GatherPoint& point, const GatherSequence::PixelPoint& u, uint32_t& rays) const;
   // What pixel (x, y)'s centre sees: cast once, at the first pass (pixelCentres).
   std::optional<RayHit> centreHit(int x, int y) const;
@@ -149,13 +126,8 @@ class FinalGather {
   SceneControl control_;
   CameraRays cameraRays_;
   GatherSequence sequence_;
-  // Per run, per pixel: sum of B over covered samples (RGB), covered count.
-  std::vector<double> sum_;
-  std::vector<PixelSample> pass_;
   std::vector<std::optional<RayHit>> centreHits_;  // per pixel, with pixelCentres
   std::vector<GatherPoint> centrePoints_;          // of each front hit, with pixelCentres
-  int passes_ = 0;
-  uint64_t rays_ = 0;
 };
 
 }  // namespace radview

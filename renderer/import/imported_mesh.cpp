@@ -147,7 +147,7 @@ void assumeMaterials(ImportedMesh& imported, const ImportOptions& options, const
   const std::string give = !reflectance && !emitters ? "--rho R,G,B and --emitters-above LUMINANCE"
                            : !reflectance            ? "--rho R,G,B"
                                                      : "--emitters-above LUMINANCE";
-  imported.gatherRefusal = "this file gives " + lacking + ", which the final gather needs (give " + give + ")";
+  imported.gatherRefusal = "this file gives " + lacking + ", which the final gather and the path tracer need (give " + give + ")";
 }
 
 }  // namespace radview

@@ -69,6 +69,9 @@ class RayCaster {
   // rounding of the normalised coordinates (~6e-8), far below any element size.
   static constexpr double kLift = 1e-5;
 
+  // The unit normal of a polygon, the side it faces (zero for a zero-area polygon).
+  const Vec3& normal(size_t polygon) const { return polygonNormals_[polygon]; }
+
   size_t triangleCount() const { return triangleCount_; }
   size_t skippedPolygons() const { return skippedPolygons_; }  // zero-area polygons left out
 

@@ -2,7 +2,6 @@
 
 #include "core/error.h"
 #include "gather_scenes.h"
-#include "solve/form_factor.h"
 #include "tests/solve/solver_scenes.h"
 
 #include <gtest/gtest.h>
@@ -28,76 +27,17 @@ GatherSettings receiverView(int width, int height) {
   return settings;
 }
 
-// rho E F(x -> emitter) averaged over the pixel (the jittered eye rays' expectation) by the
-// midpoint rule on an 8 x 8 grid, far below what the gather leaves at 64 spp; or a negative
-// value where part of the pixel (a 5 x 5 lattice of it, corners included) does not see the
-// receiver.
-std::vector<double> expectedReceiverRadiosity(const GatherSettings& settings) {
-  const Scene scene = test::receiverUnderSquareEmitter();
-  const CameraRays rays(settings.camera, settings.width, settings.height);
-  const double rhoE = scene.materials[0].rho.r * scene.materials[1].E.r;
-  // Where the ray through (px, py) meets the receiver's plane z = 0, and whether it sees the
-  // receiver there (within it, and not behind the emitter, whose face hides the receiver where
-  // the ray crosses z = 1 inside it first).
-  auto receiverPoint = [&](double px, double py, Vec3& p) {
-    const Ray ray = rays.through(px, py);
-    const double t = -ray.origin.z / ray.direction.z;
-    p = ray.origin + t * ray.direction;
-    const double tEmitter = (1.0 - ray.origin.z) / ray.direction.z;
-    const Vec3 q = ray.origin + tEmitter * ray.direction;
-    const bool hidden = tEmitter > 0 && tEmitter < t && std::abs(q.x) <= 0.5 && std::abs(q.y) <= 0.5;
-    return t > 0 && std::abs(p.x) < 2 && std::abs(p.y) < 2 && !hidden;
-  };
-  std::vector<double> expected(size_t(settings.width) * size_t(settings.height), -1.0);
-  for (int y = 0; y < settings.height; ++y)
-    for (int x = 0; x < settings.width; ++x) {
-      bool receiver = true;
-      Vec3 p;
-      for (int k = 0; k < 25 && receiver; ++k) receiver = receiverPoint(x + (k % 5) / 4.0, y + (k / 5) / 4.0, p);
-      if (!receiver) continue;
-      double sum = 0.0;
-      for (int k = 0; k < 64; ++k) {
-        receiverPoint(x + (k % 8 + 0.5) / 8.0, y + (k / 8 + 0.5) / 8.0, p);
-        sum += rhoE * pointToPolygonFormFactor(p, {0, 0, 1}, scene.polygons[1].vertices);
-      }
-      expected[size_t(y) * size_t(settings.width) + size_t(x)] = sum / 64.0;
-    }
-  return expected;
-}
-
-struct ErrorFigures {
-  double rmse = 0.0, meanSigned = 0.0, meanExpected = 0.0;
-  size_t pixels = 0;
-};
-
-ErrorFigures errorAgainst(const LinearImage& image, const std::vector<double>& expected) {
-  ErrorFigures f;
-  double squared = 0.0;
-  for (size_t i = 0; i < expected.size(); ++i) {
-    if (expected[i] < 0.0) continue;
-    const double d = image.rgba[4 * i] - expected[i];
-    squared += d * d;
-    f.meanSigned += d;
-    f.meanExpected += expected[i];
-    ++f.pixels;
-  }
-  f.rmse = std::sqrt(squared / double(f.pixels));
-  f.meanSigned /= double(f.pixels);
-  f.meanExpected /= double(f.pixels);
-  return f;
-}
-
 TEST(FinalGatherTest, ReceiverUnderASquareEmitterConvergesToTheExactFormFactorFasterThanMonteCarlo) {
   const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
   const GatherSettings settings = receiverView(64, 64);
-  const std::vector<double> expected = expectedReceiverRadiosity(settings);
+  const std::vector<double> expected = test::expectedReceiverRadiosity(settings.camera, settings.width, settings.height);
   FinalGather gather(mesh, settings);
-  std::vector<ErrorFigures> figures;
+  std::vector<test::ErrorFigures> figures;
   for (int spp : {1, 4, 16, 64}) {
     gather.addPasses(spp - gather.samplesPerPixel());
     ASSERT_EQ(gather.samplesPerPixel(), spp);
-    figures.push_back(errorAgainst(gather.image(), expected));
-    const ErrorFigures& f = figures.back();
+    figures.push_back(test::errorAgainst(gather.image(), expected));
+    const test::ErrorFigures& f = figures.back();
     std::printf(
         "receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error %+.6f, "
         "%zu pixels\n",
@@ -112,7 +52,7 @@ TEST(FinalGatherTest, ReceiverUnderASquareEmitterConvergesToTheExactFormFactorFa
   EXPECT_LT(figures[3].rmse, 0.25 * figures[0].rmse / 8.0);
   // Unbiased: the mean error over the pixels is within 4 standard errors of 0 (and a wrong pdf,
   // e.g. a missing 1/pi, is off by far more than that).
-  const ErrorFigures& last = figures.back();
+  const test::ErrorFigures& last = figures.back();
   EXPECT_LT(std::abs(last.meanSigned), 4.0 * last.rmse / std::sqrt(double(last.pixels)));
   EXPECT_LT(std::abs(last.meanSigned), 0.002 * last.meanExpected);
 }

@@ -38,7 +38,7 @@ cmp "$out/exported.samples" "$out/original.samples"
 if "$radview" render "$out/two_quads_float.ply" --method final-gather --size 8x8 --out "$out/never.png" 2> "$out/gather.err"; then
   echo "final gather ran on a PLY without reflectance"; exit 1
 fi
-grep -q 'two_quads_float.ply: the final gather cannot run: this file gives no reflectance and no emitter, which the final gather needs (give --rho R,G,B and --emitters-above LUMINANCE)' "$out/gather.err"
+grep -q 'two_quads_float.ply: the final gather cannot run: this file gives no reflectance and no emitter, which the final gather and the path tracer need (give --rho R,G,B and --emitters-above LUMINANCE)' "$out/gather.err"
 # Given them, it runs: the right quad's nodes all reach luminance 0.15, the left's do not.
 "$radview" render "$out/two_quads_float.ply" --method final-gather --rho 0.5 --emitters-above 0.15 --spp 1 --size 16x8 \
   --out "$out/gathered.png" > /dev/null
