@@ -29,7 +29,7 @@ constexpr int kMaxSurfaces = 1000;
 double maxChannel(const Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 // The power heuristic's weight of a sample drawn with density `chosen` where another strategy
-// would have drawn it with density `other` (Veach 1997, eq. 9.13 with beta = 2).
+// would have drawn it with density `other`, exponent 2 (Veach and Guibas 1995).
 double powerWeight(double chosen, double other) {
   const double a = chosen * chosen, b = other * other;
   return a / (a + b);

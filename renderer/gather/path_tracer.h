@@ -14,7 +14,7 @@
 //    reflected part below;
 //  - at each surface point x of the path, with throughput beta (the product of the reflectances
 //    so far, rho(x) included), two estimates of the light arriving from the emitters, combined
-//    by multiple importance sampling with the power heuristic (Veach 1997, §9.2):
+//    by multiple importance sampling with the power heuristic (Veach and Guibas 1995):
 //      next-event estimation: a point on the emitters by power (EmitterSampler) and its shadow
 //      ray: beta E cos(theta_x) cos(theta_e) / (pi r^2 pdf_A) w_light;
 //      the path's own next direction, cosine-weighted: where it meets an emitter's front,
