@@ -51,6 +51,12 @@ bool RadiositySolve::step() {
       split_ += split;
       return true;
     }
+    // The subdivided elements' own radiosities left light unshot (ProgressiveRefinement::
+    // subdivide): shoot it, then look again for elements to split.
+    if (!solver_->finished()) {
+      phase_ = Phase::Shooting;
+      return true;
+    }
     phase_ = Phase::Done;
   }
   return false;

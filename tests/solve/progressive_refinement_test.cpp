@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "geom/polygon.h"
+#include "mesh/load_file.h"
 #include "mesh/uniform_mesher.h"
 #include "solve/element_to_node.h"
 #include "solve/radiosity_solve.h"
@@ -93,6 +94,43 @@ TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergyBetterOnFinerMeshe
   for (int k = 0; k < 3; ++k) {
     EXPECT_LT(std::abs(fine[k]), 0.04) << "channel " << k;
     EXPECT_LT(std::abs(fine[k]), 0.75 * std::abs(coarse[k])) << "channel " << k << ": the residual must shrink with h";
+  }
+}
+
+// The mean radiosity over a polygon of the scene: each element's corner mean times its area.
+Rgb surfaceMean(const RadiosityMesh& mesh, int surface) {
+  Rgb sum(0.0);
+  double total = 0.0;
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    if (mesh.elements[e].surface != surface) continue;
+    Rgb B(0.0);
+    for (uint32_t node : mesh.elements[e].corners) B += mesh.nodes[node].B;
+    const double a = area(mesh.cornerPositions(e));
+    sum += a * B / double(mesh.elements[e].corners.size());
+    total += a;
+  }
+  return sum / total;
+}
+
+TEST(ProgressiveRefinementTest, ShadowedFootOfABlockIsLitAsItsSubdividedPatchesShootWithOrWithoutDiscontinuities) {
+  // The short block's front face sees mostly the floor in front of it, which lies in the
+  // block's own shadow. A uniform patch there is half shadow, half light; shooting its mean
+  // made the face 24-43 % brighter than a path tracer (and than the discontinuity mesh, whose
+  // triangles follow the shadow). Shooting what each subdivided element holds, the two meshes
+  // agree. Measured: within 1.5 % (16 samples, 1 % unshot).
+  // The bundled scene, whose red wall (warped) is two triangles.
+  const Scene scene = loadFile(RADVIEW_SOURCE_DIR "/assets/cornell_box.gltf").scene;
+  const int frontFace = 9;  // the short block's side from (130, 65) to (290, 114) mm, facing -z
+  SolveSettings settings;
+  settings.ambient = false;
+  SolveSummary summary;
+  const Rgb uniform = surfaceMean(solveRadiosity(scene, settings, summary), frontFace);
+  settings.discontinuityMeshing = true;
+  const Rgb discontinuity = surfaceMean(solveRadiosity(scene, settings, summary), frontFace);
+  for (int k = 0; k < 3; ++k) {
+    std::printf("short block's front face, channel %d: uniform %.5f, discontinuity mesh %.5f (%+.2f %%)\n", k,
+                uniform[k], discontinuity[k], 100.0 * (uniform[k] / discontinuity[k] - 1.0));
+    EXPECT_NEAR(uniform[k] / discontinuity[k], 1.0, 0.05) << "channel " << k;
   }
 }
 
