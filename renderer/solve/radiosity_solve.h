@@ -43,8 +43,8 @@ double defaultPatchSize(const Scene& scene);
 // smallest element, the shooters of a discontinuity mesh.
 SolveSettings resolvedFor(const Scene& scene, SolveSettings settings);
 
-// The patches: meshUniformly's, or meshWithDiscontinuities' (`report` may be null), for
-// resolved settings. Throws Error.
+// The patches: meshUniformly's cut along the lines where polygons touch (cutAtContacts), or
+// meshWithDiscontinuities' (`report` may be null), for resolved settings. Throws Error.
 RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, DiscontinuityMeshReport* report);
 
 struct SolveSummary {
