@@ -457,6 +457,37 @@ std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b
   return inside;
 }
 
+namespace {
+
+// D0 on receiver r: every other polygon (emitters too) whose bounding box reaches the receiver's.
+void addContacts(const Scene& scene, const std::vector<PolygonGeometry>& geometry, size_t r, ReceiverEvents& events) {
+  const PolygonGeometry& receiver = geometry[r];
+  for (size_t p = 0; p < geometry.size(); ++p) {
+    if (p == r || !geometry[p].valid) continue;
+    const double slack = kEventTolerance * (receiver.size + geometry[p].size);
+    const Bounds& a = receiver.bounds;
+    const Bounds& b = geometry[p].bounds;
+    if (glm::any(glm::lessThan(a.hi + slack, b.lo)) || glm::any(glm::lessThan(b.hi + slack, a.lo))) continue;
+    for (const auto& [x0, x1] : planeContact(receiver, scene.polygons[p].vertices, geometry[p]))
+      events.add(x0, x1, EventKind::Contact, Continuity::Cm1);
+  }
+}
+
+}  // namespace
+
+std::vector<std::vector<EventSegment>> findContacts(const Scene& scene) {
+  std::vector<PolygonGeometry> geometry;
+  for (const Polygon& p : scene.polygons) geometry.push_back(describe(p));
+  std::vector<std::vector<EventSegment>> segments(scene.polygons.size());
+  EventCounts counts;
+  for (size_t r = 0; r < scene.polygons.size(); ++r) {
+    if (!geometry[r].valid) continue;
+    ReceiverEvents events(geometry[r], segments[r], counts, nullptr);
+    addContacts(scene, geometry, r, events);
+  }
+  return segments;
+}
+
 std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scene, EventCounts& counts,
                                                                const CriticalLineTest* criticalLines) {
   const size_t n = scene.polygons.size();
@@ -475,16 +506,7 @@ std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scen
     ReceiverEvents events(receiver, segments[r], counts, criticalLines);
     const std::vector<Vec3>& R = scene.polygons[r].vertices;
 
-    // D0: every other polygon (emitters too) whose bounding box reaches the receiver's.
-    for (size_t p = 0; p < n; ++p) {
-      if (p == r || !geometry[p].valid) continue;
-      const double slack = kEventTolerance * (receiver.size + geometry[p].size);
-      const Bounds& a = receiver.bounds;
-      const Bounds& b = geometry[p].bounds;
-      if (glm::any(glm::lessThan(a.hi + slack, b.lo)) || glm::any(glm::lessThan(b.hi + slack, a.lo))) continue;
-      for (const auto& [x0, x1] : planeContact(receiver, scene.polygons[p].vertices, geometry[p]))
-        events.add(x0, x1, EventKind::Contact, Continuity::Cm1);
-    }
+    addContacts(scene, geometry, r, events);
 
     // EV and VE: every emitter, every occluder that is neither it nor the receiver.
     for (int e : emitters) {

@@ -80,6 +80,10 @@ std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scen
                                                                const CriticalLineTest* criticalLines = nullptr);
 constexpr int kCriticalLineSamples = 32;
 
+// The D0 contact segments alone, as findDiscontinuityEvents finds them, on every polygon,
+// emitters included (an emitting floor under a block is covered as any other).
+std::vector<std::vector<EventSegment>> findContacts(const Scene& scene);
+
 // The parts of segment a-b inside a polygon (any simple polygon, concave included), as
 // parameter intervals [t0, t1] of a + t (b - a), sorted; parts within `tolerance` of the
 // boundary and pieces shorter than it are left out.

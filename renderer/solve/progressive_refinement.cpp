@@ -55,36 +55,33 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
   sceneDiagonal_ = scene.bounds().diagonal();
   // Every element is its own patch, or a group of elements is (the first one's material and
   // surface, which the grouping shares).
-  std::vector<uint32_t> patchOf;
   if (settings_.shooterSize > 0.0)
-    patchOf = groupIntoShootingPatches(scene, mesh_, settings_.shooterSize);
+    patchOf_ = groupIntoShootingPatches(scene, mesh_, settings_.shooterSize);
   else
-    for (uint32_t e = 0; e < mesh_.elements.size(); ++e) patchOf.push_back(e);
-  std::vector<std::vector<std::vector<Vec3>>> outlines;
-  std::vector<uint32_t> first;
+    for (uint32_t e = 0; e < mesh_.elements.size(); ++e) patchOf_.push_back(e);
   for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
-    if (patchOf[e] == outlines.size()) {
-      outlines.emplace_back();
-      first.push_back(e);
-    }
-    pieceOf_.push_back({patchOf[e], uint32_t(outlines[patchOf[e]].size())});
-    outlines[patchOf[e]].push_back(mesh_.cornerPositions(e));
-    elementArea_.push_back(area(outlines[patchOf[e]].back()));
-  }
-  for (size_t p = 0; p < outlines.size(); ++p) {
-    const Element& element = mesh_.elements[first[p]];
+    const Element& element = mesh_.elements[e];
     const Material& material = mesh_.materials[element.material];
-    const auto largest = std::max_element(outlines[p].begin(), outlines[p].end(),
-                                          [](const auto& a, const auto& b) { return area(a) < area(b); });
-    Patch patch{PatchSampler(outlines[p], settings_.samples),
-                std::vector<Rgb>(outlines[p].size(), material.E),
-                material.rho,
-                material.E,
-                element.surface,
-                centroid(*largest)};
-    emittedPower_ += patch.unshotPower();
-    patches_.push_back(std::move(patch));
+    elementArea_.push_back(area(mesh_.cornerPositions(e)));
+    if (patchOf_[e] == patches_.size()) {
+      Patch patch;
+      patch.rho = material.rho;
+      patch.surface = element.surface;
+      patches_.push_back(std::move(patch));
+    }
+    patches_[patchOf_[e]].elements.push_back(e);
+    emittedPower_ += channelSum(material.E) * elementArea_.back();
   }
+  for (Patch& patch : patches_) {
+    const uint32_t largest =
+        *std::max_element(patch.elements.begin(), patch.elements.end(),
+                          [&](uint32_t a, uint32_t b) { return elementArea_[a] < elementArea_[b]; });
+    patch.centre = centroid(mesh_.cornerPositions(largest));
+    makeSampler(patch);
+    patch.initial = patch.sampler;
+  }
+  shot_.assign(mesh_.elements.size(), Rgb(0.0));
+  for (const Element& element : mesh_.elements) unshot_.push_back(mesh_.materials[element.material].E);
   if (settings_.quadratic) refiner_.makeQuadratic(mesh_);
   H_.assign(mesh_.nodes.size(), Rgb(0.0));
   assignReceivers();
@@ -94,9 +91,24 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
 
 ProgressiveRefinement::~ProgressiveRefinement() = default;
 
-double ProgressiveRefinement::Patch::unshotPower() const {
+void ProgressiveRefinement::makeSampler(Patch& patch) const {
+  std::vector<std::vector<Vec3>> outlines;
+  for (uint32_t e : patch.elements) outlines.push_back(mesh_.cornerPositions(e));
+  patch.sampler = std::make_shared<const PatchSampler>(outlines, settings_.samples);
+}
+
+Rgb ProgressiveRefinement::meanH(uint32_t element, const std::vector<Rgb>& H) const {
+  const Element& e = mesh_.elements[element];
+  Rgb sum(0.0);
+  for (const auto* list : {&e.corners, &e.midEdge})
+    for (uint32_t node : *list) sum += H[node];
+  return sum / double(e.corners.size() + e.midEdge.size());
+}
+
+double ProgressiveRefinement::unshotPower(const Patch& patch) const {
   double power = 0.0;
-  for (size_t p = 0; p < unshot.size(); ++p) power += channelSum(unshot[p]) * sampler.polygonArea(p);
+  for (uint32_t e : patch.elements)
+    power += (std::abs(unshot_[e].r) + std::abs(unshot_[e].g) + std::abs(unshot_[e].b)) * elementArea_[e];
   return power;
 }
 
@@ -137,14 +149,15 @@ void ProgressiveRefinement::assignReceivers() {
 }
 
 Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const {
-  const Patch& shooter = patches_[history_[shot].patch];
+  const Shot& record = history_[shot];
+  const Patch& shooter = patches_[record.patch];
   // A polygon does not light itself (it is planar): no rays for that.
   if (nodeMaterial_[node] < 0 || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) return Rgb(0.0);
   // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
-  return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, shooter.sampler,
-                            history_[shot].deltaB, stream, rayCaster_.get(), rays, scratch);
+  return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, *record.sampler,
+                            record.deltaB, stream, rayCaster_.get(), rays, scratch);
 }
 
 bool ProgressiveRefinement::finished() const {
@@ -158,15 +171,19 @@ bool ProgressiveRefinement::step() {
   uint32_t shooter = 0;
   double most = -1.0;
   for (uint32_t p = 0; p < patches_.size(); ++p) {
-    const double power = patches_[p].unshotPower();
+    const double power = unshotPower(patches_[p]);
     if (power > most) {
       most = power;
       shooter = p;
     }
   }
-  std::vector<Rgb>& unshot = patches_[shooter].unshot;
-  history_.push_back({shooter, unshot});
-  std::fill(unshot.begin(), unshot.end(), Rgb(0.0));
+  Shot record{shooter, patches_[shooter].sampler, {}};
+  for (uint32_t e : patches_[shooter].elements) {
+    record.deltaB.push_back(unshot_[e]);
+    shot_[e] += unshot_[e];
+    unshot_[e] = Rgb(0.0);
+  }
+  history_.push_back(std::move(record));
   const size_t shot = history_.size() - 1;
 
   const auto start = std::chrono::steady_clock::now();
@@ -187,27 +204,18 @@ bool ProgressiveRefinement::step() {
   progress_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (uint32_t cast : rays) progress_.rays += cast;
 
-  // Cohen et al. 1986 substructuring: what the elements received, area-weighted, is the new
-  // unshot radiosity (times rho) of the initial element they lie in. Serial, in element order:
-  // deterministic.
-  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
-    const Element& element = mesh_.elements[e];
-    Rgb sum(0.0);
-    for (const auto* list : {&element.corners, &element.midEdge})
-      for (uint32_t node : *list) sum += deltaH[node];
-    const double count = double(element.corners.size() + element.midEdge.size());
-    const Piece piece = pieceOf_[e];
-    Patch& patch = patches_[piece.patch];
-    patch.unshot[piece.polygon] +=
-        patch.rho * (sum / count) * (elementArea_[e] / patch.sampler.polygonArea(piece.polygon));
-  }
+  // What each element received, its nodes' mean, is new unshot radiosity (times rho) of that
+  // element, which its patch shoots (Cohen et al. 1986's substructuring, at the elements'
+  // resolution).
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e)
+    unshot_[e] += mesh_.materials[mesh_.elements[e].material].rho * meanH(e, deltaH);
   updateUnshotFraction();
   return true;
 }
 
 void ProgressiveRefinement::updateUnshotFraction() {
   double unshot = 0.0;
-  for (const Patch& patch : patches_) unshot += patch.unshotPower();
+  for (const Patch& patch : patches_) unshot += unshotPower(patch);
   progress_.unshotFraction = emittedPower_ > 0.0 ? unshot / emittedPower_ : 0.0;
   progress_.shots = history_.size();
   progress_.elements = mesh_.elements.size();
@@ -246,14 +254,32 @@ size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
     split += more;
     chosen.insert(chosen.end(), unbalanced.begin(), unbalanced.end());
   }
-  for (uint32_t parent : parentOf) pieceOf_.push_back(pieceOf_[parent]);
+  // The children inherit what their parent shot; their patches are sampled over them from now
+  // on (earlier shots keep the samplers they were shot with, for the replay).
+  std::vector<char> changed(patches_.size(), 0);
+  for (uint32_t parent : parentOf) {
+    patchOf_.push_back(patchOf_[parent]);
+    shot_.push_back(shot_[parent]);
+  }
+  for (uint32_t e : chosen) changed[patchOf_[e]] = 1;
   elementArea_.resize(mesh_.elements.size());
   for (uint32_t e : chosen) elementArea_[e] = area(mesh_.cornerPositions(e));
   for (size_t e = elementArea_.size() - parentOf.size(); e < elementArea_.size(); ++e)
     elementArea_[e] = area(mesh_.cornerPositions(e));
+  for (Patch& patch : patches_) patch.elements.clear();
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) patches_[patchOf_[e]].elements.push_back(e);
+  for (size_t p = 0; p < patches_.size(); ++p)
+    if (changed[p]) makeSampler(patches_[p]);
   H_.resize(mesh_.nodes.size(), Rgb(0.0));
   assignReceivers();
   valueNewNodes(firstNode);
+  // Every element's unshot radiosity from its nodes as they now are: its radiosity less what it
+  // has shot (Cohen et al. 1988's Delta B).
+  unshot_.resize(mesh_.elements.size());
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Material& material = mesh_.materials[mesh_.elements[e].material];
+    unshot_[e] = material.E + material.rho * meanH(e, H_) - shot_[e];
+  }
   updateUnshotFraction();
   return split;
 }
@@ -274,9 +300,9 @@ void ProgressiveRefinement::makePatchFormFactors() const {
           if (j == i || (receiver.surface >= 0 && patches_[j].surface == receiver.surface)) continue;
           SampleStream stream = SampleStream::forKey(settings_.seed, UINT64_MAX, i * n + j);
           size_t rays = 0;
-          const double F = elementToNodeFormFactor({receiver.centre, receiver.sampler.normal()}, patches_[j].sampler,
+          const double F = elementToNodeFormFactor({receiver.centre, receiver.initial->normal()}, *patches_[j].initial,
                                                    stream, rayCaster_.get(), rays, scratch);
-          const double F0 = patches_[j].sampler.unoccluded().from(receiver.centre, receiver.sampler.normal());
+          const double F0 = patches_[j].initial->unoccluded().from(receiver.centre, receiver.initial->normal());
           patchF_[i * n + j] = F;
           if (F0 > 0.0) patchVisibility_[i * n + j] = F / F0;
         }
@@ -298,8 +324,8 @@ std::vector<Rgb> ProgressiveRefinement::ambient() const {
   std::vector<Rgb> U(n, Rgb(0.0));  // area-weighted mean per patch
   for (size_t j = 0; j < n; ++j) {
     const Patch& patch = patches_[j];
-    for (size_t p = 0; p < patch.unshot.size(); ++p) U[j] += patch.unshot[p] * patch.sampler.polygonArea(p);
-    U[j] /= patch.sampler.area();
+    for (uint32_t e : patch.elements) U[j] += unshot_[e] * elementArea_[e];
+    U[j] /= patch.sampler->area();
   }
   std::vector<Rgb> G(mesh_.nodes.size(), Rgb(0.0));
   if (std::all_of(U.begin(), U.end(), [](const Rgb& u) { return u == Rgb(0.0); })) return G;
@@ -328,7 +354,7 @@ std::vector<Rgb> ProgressiveRefinement::ambient() const {
   for (uint32_t e = 0; e < mesh_.elements.size(); ++e)
     for (const auto* list : {&mesh_.elements[e].corners, &mesh_.elements[e].midEdge})
       for (uint32_t node : *list)
-        if (patchOf[node] == UINT32_MAX) patchOf[node] = pieceOf_[e].patch;
+        if (patchOf[node] == UINT32_MAX) patchOf[node] = patchOf_[e];
   parallelFor(
       mesh_.nodes.size(),
       [&](size_t node) {
@@ -339,8 +365,8 @@ std::vector<Rgb> ProgressiveRefinement::ambient() const {
           const Patch& shooter = patches_[j];
           if (W[j] == Rgb(0.0) || (shooter.surface >= 0 && nodeSurface_[node] == shooter.surface)) continue;
           // At the inside point where the shooter is edge-on to the node, as gathered() does.
-          double F0 = shooter.sampler.unoccluded().from(x, nodeNormal_[node]);
-          if (F0 == 0.0) F0 = shooter.sampler.unoccluded().from(nodeInside_[node], nodeNormal_[node]);
+          double F0 = shooter.sampler->unoccluded().from(x, nodeNormal_[node]);
+          if (F0 == 0.0) F0 = shooter.sampler->unoccluded().from(nodeInside_[node], nodeNormal_[node]);
           if (F0 == 0.0) continue;
           G[node] += F0 * visible[p * n + j] * W[j];
         }
@@ -364,17 +390,11 @@ RadiosityMesh ProgressiveRefinement::solution(bool withAmbient) const {
 
 EnergyBalance ProgressiveRefinement::energyBalance() const {
   EnergyBalance balance;
-  for (const Patch& patch : patches_) {
-    balance.emitted += patch.E * patch.sampler.area();
-    for (size_t p = 0; p < patch.unshot.size(); ++p) balance.unshot += patch.unshot[p] * patch.sampler.polygonArea(p);
-  }
-  for (size_t e = 0; e < mesh_.elements.size(); ++e) {
-    const Element& element = mesh_.elements[e];
-    Rgb sum(0.0);
-    for (const auto* list : {&element.corners, &element.midEdge})
-      for (uint32_t node : *list) sum += H_[node];
-    const Rgb meanH = sum / double(element.corners.size() + element.midEdge.size());
-    balance.absorbed += (Rgb(1.0) - mesh_.materials[element.material].rho) * meanH * elementArea_[e];
+  for (uint32_t e = 0; e < mesh_.elements.size(); ++e) {
+    const Material& material = mesh_.materials[mesh_.elements[e].material];
+    balance.emitted += material.E * elementArea_[e];
+    balance.unshot += unshot_[e] * elementArea_[e];
+    balance.absorbed += (Rgb(1.0) - material.rho) * meanH(e, H_) * elementArea_[e];
   }
   return balance;
 }

@@ -2,8 +2,11 @@
 // Progressive refinement radiosity (Cohen, Chen, Wallace, Greenberg 1988), shooting from
 // patches to mesh nodes with ray-traced element-to-node form factors (Wallace, Elmquist,
 // Haines 1989), on a two-level hierarchy (Cohen, Greenberg, Immel, Brock 1986): the shooters are
-// the patches, the elements of the initial mesh, never subdivided; the receivers are the nodes
-// of the elements, which adaptive subdivision refines under the patches.
+// the patches, the elements of the initial mesh (or groups of them), never subdivided; the
+// receivers are the nodes of the elements, which adaptive subdivision refines under the patches.
+// A patch shoots the radiosity of each of its current elements, so that once its elements are
+// subdivided it shoots at their resolution: a patch half in a shadow, or half under a block
+// standing on it, shoots its lit part's light from its lit part only.
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 #include "solve/adaptive_subdivision.h"
@@ -40,9 +43,9 @@ struct SolveProgress {
 // Power per channel (B times area) in the scene's units, for the energy balance
 // emitted = absorbed + unshot (+ what leaves an open scene).
 struct EnergyBalance {
-  Rgb emitted{0.0};   // sum over patches of E A
+  Rgb emitted{0.0};   // sum over elements of E A
   Rgb absorbed{0.0};  // sum over elements of (1 - rho) H A, H the mean gathered radiosity of its nodes
-  Rgb unshot{0.0};    // sum over patches of their unshot radiosity times area
+  Rgb unshot{0.0};    // sum over elements of their unshot radiosity times area
 };
 
 class ProgressiveRefinement {
@@ -55,14 +58,17 @@ class ProgressiveRefinement {
   ProgressiveRefinement(const Scene& scene, RadiosityMesh mesh, const SolverSettings& settings);
   ~ProgressiveRefinement();
 
-  // One shot from the patch of largest unshot power (summed over R, G, B). Returns false,
+  // One shot from the patch of largest unshot power (summed over R, G, B, of the magnitudes of
+  // its elements' unshot radiosities, which subdivision can make negative). Returns false,
   // shooting nothing, once the stop criterion is met.
   bool step();
   bool finished() const;
 
   // One round of adaptive subdivision of the elements (elementsToSplit on the current
   // solution), then the new nodes valued by replaying every shot so far (exactly the values
-  // they would have had, had they existed from the start). Returns the elements split.
+  // they would have had, had they existed from the start). Returns the elements split. The
+  // children's radiosity, from their own nodes, differs from the parent's mean that was shot
+  // for them: the difference is unshot (of either sign), and step() shoots it.
   size_t subdivide(const SubdivisionCriteria& criteria);
 
   const SolveProgress& progress() const { return progress_; }
@@ -78,27 +84,33 @@ class ProgressiveRefinement {
 
  private:
   // A shooter: one element of the initial mesh, or a group of them (SolverSettings::
-  // shooterSize), each of which keeps its own unshot radiosity (radiosityFromPatch).
+  // shooterSize), sampled over its current elements, each shooting its own unshot radiosity
+  // (radiosityFromPatch).
   struct Patch {
-    PatchSampler sampler;
-    std::vector<Rgb> unshot;  // per polygon of the sampler (initial element)
-    Rgb rho{0.0}, E{0.0};
+    std::shared_ptr<const PatchSampler> sampler;  // its polygons: `elements`, in that order
+    // Over its initial elements: the ambient term's patch-to-patch form factors, made once
+    // whenever it is first asked for, are the same whatever the subdivision by then.
+    std::shared_ptr<const PatchSampler> initial;
+    std::vector<uint32_t> elements;
+    Rgb rho{0.0};
     int surface = -1;
-    // The centroid of its largest polygon: a point on the patch, which the centroid of a
-    // grouped patch's polygons need not be.
+    // The centroid of its largest initial element: a point on the patch, which the centroid of
+    // a grouped patch's polygons need not be.
     Vec3 centre{0.0};
-    double unshotPower() const;  // summed over R, G, B
   };
   struct Shot {
     uint32_t patch = 0;
-    std::vector<Rgb> deltaB;  // per polygon of the patch
-  };
-  // Where an element's received light goes: the polygon of a patch it lies in.
-  struct Piece {
-    uint32_t patch = 0, polygon = 0;
+    std::shared_ptr<const PatchSampler> sampler;  // the patch's elements when it shot
+    std::vector<Rgb> deltaB;                      // per polygon of that sampler
   };
 
   void assignReceivers();
+  // The mean gathered radiosity H of the element's nodes: what it reflects, rho times this, and
+  // absorbs, (1 - rho) times this, per unit area (linear elements: the integral of the
+  // interpolant over the element).
+  Rgb meanH(uint32_t element, const std::vector<Rgb>& H) const;
+  double unshotPower(const Patch& patch) const;  // sum over its elements of |unshot| A, R + G + B
+  void makeSampler(Patch& patch) const;
   Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
   void valueNewNodes(size_t firstNode);
   void updateUnshotFraction();
@@ -111,8 +123,12 @@ class ProgressiveRefinement {
   std::vector<Vec3> surfaceNormals_;  // of the scene's polygons
   double sceneDiagonal_ = 0.0;
   std::vector<Patch> patches_;
-  std::vector<Piece> pieceOf_;       // per element
-  std::vector<double> elementArea_;  // per element
+  // Per element: its patch, its area, the radiosity it has shot (summed over its shots, a child
+  // inheriting its parent's), and its unshot radiosity, E + rho meanH - shot (Cohen et al. 1988's
+  // Delta B), kept up to date by step() and subdivide().
+  std::vector<uint32_t> patchOf_;
+  std::vector<double> elementArea_;
+  std::vector<Rgb> shot_, unshot_;
   // Per node, from the first element that uses it: the point a hair inside that element its
   // rays leave from (ReceiverPoint::inside), the normal it receives with, its scene polygon, its
   // material (-1: no element uses it yet); and its gathered radiosity H, the sum of deltaB F

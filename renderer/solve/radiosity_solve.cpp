@@ -1,6 +1,7 @@
 #include "solve/radiosity_solve.h"
 
 #include "mesh/uniform_mesher.h"
+#include "solve/contact_cut.h"
 
 #include <cmath>
 
@@ -23,7 +24,7 @@ SolveSettings resolvedFor(const Scene& scene, SolveSettings settings) {
 
 RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, DiscontinuityMeshReport* report) {
   return resolved.discontinuityMeshing ? meshWithDiscontinuities(scene, resolved.patchSize, report)
-                                       : meshUniformly(scene, resolved.patchSize);
+                                       : cutAtContacts(scene, meshUniformly(scene, resolved.patchSize));
 }
 
 RadiositySolve::RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report)
@@ -49,6 +50,12 @@ bool RadiositySolve::step() {
     if (split > 0) {
       ++rounds_;
       split_ += split;
+      return true;
+    }
+    // The subdivided elements' own radiosities left light unshot (ProgressiveRefinement::
+    // subdivide): shoot it, then look again for elements to split.
+    if (!solver_->finished()) {
+      phase_ = Phase::Shooting;
       return true;
     }
     phase_ = Phase::Done;

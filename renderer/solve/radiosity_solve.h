@@ -1,6 +1,8 @@
 #pragma once
 // The whole solve: progressive refinement to the stop criterion, then rounds of adaptive
-// subdivision, each valuing its new nodes by replaying the shots, until nothing splits.
+// subdivision, each valuing its new nodes by replaying the shots, until nothing splits; then
+// the light the subdivision left unshot is shot to the stop criterion, and the rounds go on,
+// until a round splits nothing with the criterion met.
 // RadiositySolve takes it one step at a time, so that `radview solve` and the viewer's
 // background solve (solve/background_solve.h) run the same steps; solveRadiosity runs them all.
 #include "mesh/radiosity_mesh.h"
@@ -41,8 +43,8 @@ double defaultPatchSize(const Scene& scene);
 // smallest element, the shooters of a discontinuity mesh.
 SolveSettings resolvedFor(const Scene& scene, SolveSettings settings);
 
-// The patches: meshUniformly's, or meshWithDiscontinuities' (`report` may be null), for
-// resolved settings. Throws Error.
+// The patches: meshUniformly's cut along the lines where polygons touch (cutAtContacts), or
+// meshWithDiscontinuities' (`report` may be null), for resolved settings. Throws Error.
 RadiosityMesh initialMesh(const Scene& scene, const SolveSettings& resolved, DiscontinuityMeshReport* report);
 
 struct SolveSummary {
@@ -67,7 +69,8 @@ class RadiositySolve {
   RadiositySolve(const Scene& scene, const SolveSettings& settings, DiscontinuityMeshReport* report = nullptr);
 
   // One shot while shooting, else one round of subdivision (the call that finds nothing left
-  // to shoot only moves on to subdividing); false once the solve is done.
+  // to shoot only moves on to subdividing, and the round that splits nothing goes back to
+  // shooting if the subdivision left light unshot); false once the solve is done.
   bool step();
   Phase phase() const { return phase_; }
   const SolveSettings& settings() const { return settings_; }

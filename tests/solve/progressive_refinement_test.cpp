@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "geom/polygon.h"
+#include "mesh/load_file.h"
 #include "mesh/uniform_mesher.h"
 #include "solve/element_to_node.h"
 #include "solve/radiosity_solve.h"
@@ -22,6 +23,7 @@ using test::closedCornellBox;
 using test::cornellBox;
 using test::errorOf;
 using test::furnaceBox;
+using test::furnaceWithBlock;
 
 // Runs shots until the solver stops; the loop is bounded by maxShots.
 void shootAll(ProgressiveRefinement& solver) {
@@ -93,6 +95,69 @@ TEST(ProgressiveRefinementTest, ClosedCornellBoxBalancesEnergyBetterOnFinerMeshe
   for (int k = 0; k < 3; ++k) {
     EXPECT_LT(std::abs(fine[k]), 0.04) << "channel " << k;
     EXPECT_LT(std::abs(fine[k]), 0.75 * std::abs(coarse[k])) << "channel " << k << ": the residual must shrink with h";
+  }
+}
+
+TEST(ProgressiveRefinementTest, FurnaceWithABlockOnItsFloorKeepsEnergyAndBEverywhereInSight) {
+  // Every surface in sight has B = E / (1 - rho) = 2, and no light leaves the box: emitted =
+  // absorbed + unshot. The uniform patches of 0.25 cross the block's footprint; a patch that
+  // lay partly under the block would count what it cannot shoot (its hidden part shoots into
+  // the block) and light nodes it has under the block. Measured with the solve's patches cut
+  // along the footprint: residual +0.03 %, every node within 0.0067 of 2 (a patch shooting its
+  // mean over the footprint: +1.2 %, nodes at B = 1 under the block).
+  const Scene scene = furnaceWithBlock(Rgb(0.5), Rgb(1.0));
+  SolveSettings settings;
+  settings.patchSize = 0.25;
+  settings.solver.stopUnshotFraction = 1e-3;
+  settings.ambient = false;
+  SolveSummary summary;
+  const RadiosityMesh mesh = solveRadiosity(scene, settings, summary);
+  const EnergyBalance& energy = summary.energy;
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT(std::abs(energy.emitted[k] - energy.absorbed[k] - energy.unshot[k]), 0.003 * energy.emitted[k])
+        << "channel " << k;
+  double worst = 0.0;
+  for (const Element& element : mesh.elements)
+    for (uint32_t node : element.corners) worst = std::max(worst, std::abs(mesh.nodes[node].B.g - 2.0));
+  EXPECT_LT(worst, 0.01) << "largest |B - 2|";
+  std::printf("furnace with a block: %zu elements, residual %+.5f, largest |B - 2| = %.4f\n", mesh.elements.size(),
+              (energy.emitted.g - energy.absorbed.g - energy.unshot.g) / energy.emitted.g, worst);
+}
+
+// The mean radiosity over a polygon of the scene: each element's corner mean times its area.
+Rgb surfaceMean(const RadiosityMesh& mesh, int surface) {
+  Rgb sum(0.0);
+  double total = 0.0;
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    if (mesh.elements[e].surface != surface) continue;
+    Rgb B(0.0);
+    for (uint32_t node : mesh.elements[e].corners) B += mesh.nodes[node].B;
+    const double a = area(mesh.cornerPositions(e));
+    sum += a * B / double(mesh.elements[e].corners.size());
+    total += a;
+  }
+  return sum / total;
+}
+
+TEST(ProgressiveRefinementTest, ShadowedFootOfABlockIsLitAsItsSubdividedPatchesShootWithOrWithoutDiscontinuities) {
+  // The short block's front face sees mostly the floor in front of it, which lies in the
+  // block's own shadow. A uniform patch there is half shadow, half light; shooting its mean
+  // made the face 24-43 % brighter than a path tracer (and than the discontinuity mesh, whose
+  // triangles follow the shadow). Shooting what each subdivided element holds, the two meshes
+  // agree. Measured: within 1.5 % (16 samples, 1 % unshot).
+  // The bundled scene, whose red wall (warped) is two triangles.
+  const Scene scene = loadFile(RADVIEW_SOURCE_DIR "/assets/cornell_box.gltf").scene;
+  const int frontFace = 9;  // the short block's side from (130, 65) to (290, 114) mm, facing -z
+  SolveSettings settings;
+  settings.ambient = false;
+  SolveSummary summary;
+  const Rgb uniform = surfaceMean(solveRadiosity(scene, settings, summary), frontFace);
+  settings.discontinuityMeshing = true;
+  const Rgb discontinuity = surfaceMean(solveRadiosity(scene, settings, summary), frontFace);
+  for (int k = 0; k < 3; ++k) {
+    std::printf("short block's front face, channel %d: uniform %.5f, discontinuity mesh %.5f (%+.2f %%)\n", k,
+                uniform[k], discontinuity[k], 100.0 * (uniform[k] / discontinuity[k] - 1.0));
+    EXPECT_NEAR(uniform[k] / discontinuity[k], 1.0, 0.05) << "channel " << k;
   }
 }
 

@@ -110,9 +110,9 @@ TEST(ViewDrivenTest, OnlyElementsInViewAreSplit) {
 
 TEST(ViewDrivenTest, ElementsNoViewSeesAreNeverRefinedAndTheBudgetGoesWhereItShows) {
   const Scene scene = test::cornellBox();
-  const RadiosityMesh initial = meshUniformly(scene, 100.0);
   const SolveView corner = cornerView();
   SolveSettings settings = cornellSettings(4000);
+  const RadiosityMesh initial = initialMesh(scene, resolvedFor(scene, settings), nullptr);
   SolveSummary independentSummary, drivenSummary;
   const RadiosityMesh independent = solveRadiosity(scene, settings, independentSummary);
   settings.subdivision.views = {corner};
