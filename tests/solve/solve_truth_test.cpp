@@ -1,0 +1,92 @@
+// The solver against the truth: on the bundled Cornell box, the default solve's radiosity, drawn
+// by Gouraud as the viewer first shows it, against the path tracer (gather/path_tracer.h, itself
+// checked against closed forms and against Cycles) on every surface.
+#include "gather/path_tracer.h"
+#include "geom/polygon.h"
+#include "interp/interpolant.h"
+#include "mesh/load_file.h"
+#include "solve/patch_sampler.h"
+#include "solve/radiosity_solve.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+
+namespace radview {
+namespace {
+
+// Over one surface, the mean of B^ and of the truth at the same area-uniform points, and the
+// standard error of their ratio (paired: the points' own variation cancels).
+struct SurfaceAgreement {
+  double solution = 0.0, truth = 0.0, standardError = 0.0;
+  double ratio() const { return solution / truth; }
+};
+
+TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurface) {
+  const Scene scene = loadFile(RADVIEW_SOURCE_DIR "/assets/cornell_box.gltf").scene;
+  SolveSummary summary;
+  const RadiosityMesh mesh = solveRadiosity(scene, SolveSettings{}, summary);
+  const std::unique_ptr<Interpolant> gouraud = makeInterpolant(mesh, Method::Gouraud, {});
+  const PathTracer tracer(scene, PathTraceSettings{});
+
+  // The elements' triangles by surface, with their areas, to draw points from.
+  struct Triangle {
+    uint32_t element;
+    Vec3 a, b, c;
+    double area;
+  };
+  std::map<int, std::vector<Triangle>> bySurface;
+  for (uint32_t e = 0; e < mesh.elements.size(); ++e) {
+    const std::vector<Vec3> corners = mesh.cornerPositions(e);
+    for (const auto& t : triangulatePolygon(corners)) {
+      const Vec3 &a = corners[size_t(t[0])], &b = corners[size_t(t[1])], &c = corners[size_t(t[2])];
+      bySurface[mesh.elements[e].surface].push_back({e, a, b, c, 0.5 * glm::length(glm::cross(b - a, c - a))});
+    }
+  }
+  ASSERT_EQ(bySurface.count(-1), 0u) << "every element knows its surface";
+
+  constexpr int kPoints = 2000, kPaths = 32;
+  auto luminance = [](const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
+  SampleStream random(12345);
+  for (const auto& [surface, triangles] : bySurface) {
+    double total = 0.0;
+    for (const Triangle& t : triangles) total += t.area;
+    const Material& material = scene.materials[size_t(scene.polygons[size_t(surface)].material)];
+    const Vec3 normal = unitNormal(scene.polygons[size_t(surface)].vertices);
+    double sumSolution = 0.0, sumTruth = 0.0;
+    std::vector<double> solution, truth;
+    for (int i = 0; i < kPoints; ++i) {
+      double pick = random.uniform() * total;
+      size_t k = 0;
+      while (k + 1 < triangles.size() && pick > triangles[k].area) pick -= triangles[k++].area;
+      const Triangle& t = triangles[k];
+      const double s = std::sqrt(random.uniform()), u = random.uniform();
+      const Vec3 x = (1.0 - s) * t.a + s * (1.0 - u) * t.b + s * u * t.c;
+      double B = 0.0;
+      for (int p = 0; p < kPaths; ++p) B += luminance(tracer.samplePoint(material, normal, x, uint64_t(i), p)) / kPaths;
+      solution.push_back(luminance(gouraud->evaluate(t.element, x).B));
+      truth.push_back(B);
+      sumSolution += solution.back();
+      sumTruth += B;
+    }
+    SurfaceAgreement agreement{sumSolution / kPoints, sumTruth / kPoints, 0.0};
+    // The ratio's standard error by the delta method over the paired points.
+    double variance = 0.0;
+    for (int i = 0; i < kPoints; ++i) {
+      const double d = solution[size_t(i)] - agreement.ratio() * truth[size_t(i)];
+      variance += d * d / (kPoints - 1);
+    }
+    agreement.standardError = std::sqrt(variance / kPoints) / agreement.truth;
+    std::printf("surface %2d (%s): solution / truth %.4f +- %.4f\n", surface, material.name.c_str(),
+                agreement.ratio(), agreement.standardError);
+    if (agreement.truth <= 0.0) continue;
+    // radview's target for the default solve: 2 % on every surface, with 4 standard errors of
+    // slack for the estimate.
+    EXPECT_NEAR(agreement.ratio(), 1.0, 0.02 + 4.0 * agreement.standardError) << "surface " << surface;
+  }
+}
+
+}  // namespace
+}  // namespace radview
