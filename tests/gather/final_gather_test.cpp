@@ -20,10 +20,7 @@ GatherSettings receiverView(int width, int height) {
   GatherSettings settings;
   settings.width = width;
   settings.height = height;
-  settings.camera.eye = {0.0, -3.5, 0.6};
-  settings.camera.target = {0.0, 0.0, 0.0};
-  settings.camera.up = {0.0, 0.0, 1.0};
-  settings.camera.yfov = glm::radians(45.0);
+  settings.camera = test::receiverCamera();
   return settings;
 }
 
@@ -69,9 +66,7 @@ TEST(FinalGatherTest, FurnaceGivesEOverOneMinusRho) {
     GatherSettings settings;
     settings.interpolant = method;
     settings.width = settings.height = 48;
-    settings.camera.eye = {0.5, 0.5, 0.95};
-    settings.camera.target = {0.3, 0.4, 0.0};
-    settings.camera.yfov = glm::radians(100.0);
+    settings.camera = test::furnaceCamera();
     FinalGather gather(mesh, settings);
     gather.addPasses(32);
     const LinearImage image = gather.image();
@@ -156,9 +151,7 @@ TEST(FinalGatherTest, BackFacesShowTheInterpolatedSolutionAsTheGlRendererDoes) {
   const RadiosityMesh mesh = test::receiverUnderSquareEmitterMesh();
   GatherSettings settings;
   settings.width = settings.height = 9;
-  settings.camera.eye = {0.0, 0.0, 3.0};
-  settings.camera.target = {0.0, 0.0, 0.0};
-  settings.camera.yfov = glm::radians(10.0);
+  settings.camera = test::emitterBackCamera();
   FinalGather gather(mesh, settings);
   gather.addPasses(2);
   const LinearImage image = gather.image();

@@ -33,6 +33,35 @@ inline RadiosityMesh receiverUnderSquareEmitterMesh() {
   return mesh;
 }
 
+// The receiver seen obliquely from below the emitter's height: most pixels see the receiver,
+// some the emitter's face.
+inline Camera receiverCamera() {
+  Camera camera;
+  camera.eye = {0.0, -3.5, 0.6};
+  camera.target = {0.0, 0.0, 0.0};
+  camera.up = {0.0, 0.0, 1.0};
+  camera.yfov = glm::radians(45.0);
+  return camera;
+}
+
+// Straight down on the emitter's back, which hides the receiver's centre.
+inline Camera emitterBackCamera() {
+  Camera camera;
+  camera.eye = {0.0, 0.0, 3.0};
+  camera.target = {0.0, 0.0, 0.0};
+  camera.yfov = glm::radians(10.0);
+  return camera;
+}
+
+// Inside the unit furnace box (tests/solve/solver_scenes.h), looking at a corner of its floor.
+inline Camera furnaceCamera() {
+  Camera camera;
+  camera.eye = {0.5, 0.5, 0.95};
+  camera.target = {0.3, 0.4, 0.0};
+  camera.yfov = glm::radians(100.0);
+  return camera;
+}
+
 // The receiver's radiosity rho E F(x -> emitter), F by Lambert's formula, averaged over each
 // pixel of a view of it (what jittered eye rays converge to) by the midpoint rule on an 8 x 8
 // grid, far below what an estimator leaves at 64 spp; or a negative value where part of the

@@ -20,10 +20,7 @@ PathTraceSettings receiverView(int width, int height) {
   PathTraceSettings settings;
   settings.width = width;
   settings.height = height;
-  settings.camera.eye = {0.0, -3.5, 0.6};
-  settings.camera.target = {0.0, 0.0, 0.0};
-  settings.camera.up = {0.0, 0.0, 1.0};
-  settings.camera.yfov = glm::radians(45.0);
+  settings.camera = test::receiverCamera();
   return settings;
 }
 
@@ -80,9 +77,7 @@ TEST(PathTracerTest, FurnaceGivesEOverOneMinusRhoByPathsOfEveryLength) {
   const Scene scene = test::furnaceBox(rho, E);
   PathTraceSettings settings;
   settings.width = settings.height = 48;
-  settings.camera.eye = {0.5, 0.5, 0.95};
-  settings.camera.target = {0.3, 0.4, 0.0};
-  settings.camera.yfov = glm::radians(100.0);
+  settings.camera = test::furnaceCamera();
   PathTracer tracer(scene, settings);
   tracer.addPasses(32);
   const LinearImage image = tracer.image();
@@ -141,9 +136,7 @@ TEST(PathTracerTest, BackFacesAreBlack) {
   const Scene scene = test::receiverUnderSquareEmitter();
   PathTraceSettings settings;
   settings.width = settings.height = 9;
-  settings.camera.eye = {0.0, 0.0, 3.0};
-  settings.camera.target = {0.0, 0.0, 0.0};
-  settings.camera.yfov = glm::radians(10.0);
+  settings.camera = test::emitterBackCamera();
   PathTracer tracer(scene, settings);
   tracer.addPasses(2);
   const LinearImage image = tracer.image();
