@@ -127,9 +127,16 @@ int runRender(const RenderOptions& options) {
     checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
   else
     checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");
+  // The camera and the GL display options are refused before a scene's solve, not after it.
+  auto checkOptions = [&](const LoadedFile& file) {
+    const Bounds bounds = file.isSolution ? file.mesh.bounds() : file.scene.bounds();
+    cameraFromSpec(options.display.camera, bounds, file.scene.cameras);
+    if (!isRayTraced(options.display.method)) settingsFrom(options.display);
+  };
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import,
                                            // the path tracer takes the surfaces alone: no solve needed
-                                           options.display.method == kPathTrace ? kDirectLight : options.light);
+                                           options.display.method == kPathTrace ? kDirectLight : options.light,
+                                           checkOptions);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   if (isRayTraced(options.display.method))
     renderRayTraced(viewed, options.display, options.gather, width, height, options.out, options.linearOut);

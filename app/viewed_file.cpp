@@ -41,9 +41,10 @@ RadiosityMesh solvedScene(const Scene& scene, double elementSize, const SolveSet
 }  // namespace
 
 ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import,
-                          const SceneLightOptions& light) {
+                          const SceneLightOptions& light, const std::function<void(const LoadedFile&)>& checkLoaded) {
   ViewedFile viewed;
   viewed.file = loadFile(path, import);
+  if (checkLoaded) checkLoaded(viewed.file);
   // Meshing, lighting and topology report problems without knowing the file: name it here,
   // so every error the user sees says which file it is about.
   try {

@@ -6,6 +6,7 @@
 #include "mesh/load_file.h"
 #include "mesh/radiosity_mesh.h"
 
+#include <functional>
 #include <string>
 
 namespace radview {
@@ -21,9 +22,12 @@ struct ViewedFile {
 
 // elementSize <= 0 picks the default (defaultElementSize(scene), or the solve's patch size);
 // `import` says how another tool's mesh is read (mesh/load_file.h); `light` how a scene is lit.
-// A solve shows its progress on standard error when that is a terminal. Throws Error.
+// `checkLoaded`, if given, sees the file once it is read and before a scene is meshed or solved:
+// options that depend on the file (a camera) are refused there, not after a solve. A solve shows
+// its progress on standard error when that is a terminal. Throws Error.
 ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import,
-                          const SceneLightOptions& light);
+                          const SceneLightOptions& light,
+                          const std::function<void(const LoadedFile&)>& checkLoaded = nullptr);
 
 // The final gather (eq. 9.9) and the path tracer integrate rho times the light around each point
 // seen and add the emitters' E: a mesh imported without them (a PLY's colours alone) cannot be
