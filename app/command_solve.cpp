@@ -144,9 +144,13 @@ int runSolve(const SolveOptions& options) {
   std::printf("patches: %zu (size %g); elements: %zu %s; nodes: %zu; T-vertices: %zu\n", p.patches, settings.patchSize,
               mesh.elements.size(), settings.solver.quadratic ? "quadratic" : "linear", mesh.nodes.size(),
               topology.tVertices().size());
-  std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps, min size %g, max %zu elements%s)\n",
+  char interpolationError[64] = "";
+  if (settings.subdivision.relativeError > 0.0)
+    std::snprintf(interpolationError, sizeof interpolationError, ", interpolation error %g %%",
+                  100.0 * settings.subdivision.relativeError);
+  std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps%s, min size %g, max %zu elements%s)\n",
               summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,
-              settings.subdivision.minElementSize, settings.subdivision.maxElements,
+              interpolationError, settings.subdivision.minElementSize, settings.subdivision.maxElements,
               settings.subdivision.balance ? ", 2:1 balanced" : "");
   if (summary.views > 0)
     std::printf("meshed for %zu view%s at %s (elements no view sees are not split)\n", summary.views,

@@ -54,6 +54,8 @@ budget="--max-elements 1000 --tolerance 1 --min-element-size 0.00125"
   --cycles-spp 2048 --out-dir /tmp/radview-agreement
 mkdir -p $out/truth
 for row in path-tracer-1024-spp-x-2-seeds clough-tocher-the-scene-as-opened-default-solve clough-tocher-bundled-solution \
-  final-gather-over-the-bundled-solution-256-spp direct-light-only-direct-only-clough-tocher; do
+  final-gather-over-the-bundled-solution-256-spp direct-light-only-direct-only-clough-tocher \
+  clough-tocher-converged-solve-with-discontinuity-meshing \
+  clough-tocher-shooting-converged-mesh-by-display-steps-alone; do
   cp /tmp/radview-agreement/$row.png $out/truth/
 done

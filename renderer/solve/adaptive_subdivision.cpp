@@ -3,6 +3,7 @@
 #include "geom/polygon.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
+#include "solve/interpolation_error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,9 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
   const double scale = toneMapScale(valued);
   const bool forViews = !criteria.views.empty();
   const std::vector<uint32_t> pixels = viewedPixels(valued, criteria.views);
+  const std::vector<double> relativeErrors = criteria.relativeError > 0.0
+                                                 ? relativeInterpolationErrors(valued, 0.01 / scale)
+                                                 : std::vector<double>(valued.elements.size(), 0.0);
   std::vector<std::pair<double, uint32_t>> candidates;  // (priority, element)
   for (uint32_t e = 0; e < valued.elements.size(); ++e) {
     const Element& element = valued.elements[e];
@@ -51,14 +55,15 @@ std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const Subdivi
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }
-    const double spread = hi - lo;
-    if (spread > criteria.tolerance) candidates.push_back({forViews ? spread * spread * double(pixels[e]) : spread, e});
+    double excess = (hi - lo) / criteria.tolerance;
+    if (criteria.relativeError > 0.0) excess = std::max(excess, relativeErrors[e] / criteria.relativeError);
+    if (excess > 1.0) candidates.push_back({forViews ? excess * excess * double(pixels[e]) : excess, e});
   }
   std::sort(candidates.begin(), candidates.end(),
             [](const auto& x, const auto& y) { return x.first != y.first ? x.first > y.first : x.second < y.second; });
   std::vector<uint32_t> chosen;
   size_t count = valued.elements.size();
-  for (const auto& [spread, e] : candidates) {
+  for (const auto& [priority, e] : candidates) {
     const size_t grown = count + childCount(valued.elements[e]) - 1;
     if (grown > criteria.maxElements) break;
     count = grown;

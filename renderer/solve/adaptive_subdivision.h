@@ -19,6 +19,11 @@ struct SubdivisionCriteria {
   // toneMapScale the solution file's (solution_file.h), so a step is one level of what a
   // viewer shows for the file.
   double tolerance = 8.0;
+  // > 0: elements are also split where linear interpolation is off by more than this fraction
+  // of B at their centre (solve/interpolation_error.h), on elements whose B is at least 1 % of
+  // display white: the spread of bright, smooth light is a few display steps where its curvature
+  // makes the interpolant, and the light the element shoots, percents low. 0: spread only.
+  double relativeError = 0.0;
   // No element is split whose longest edge is below twice this (its children would be smaller).
   double minElementSize = 0.0;
   // Splits stop where they would take the mesh above this many elements; the largest spreads
@@ -40,9 +45,10 @@ struct SubdivisionCriteria {
 // The display value a tolerance is measured in (see SubdivisionCriteria::tolerance).
 double displayValue(const Rgb& B, double toneMapScale);
 
-// The elements to split, in order of decreasing spread (with views: of spread^2 times the pixels
-// that see them, seen elements only): spread above the tolerance, not emitting (emitters
-// display saturated), large enough, and within maxElements.
+// The elements to split, in order of decreasing excess s = max(spread / tolerance, relative
+// error / relativeError) (with views: of s^2 times the pixels that see them, seen elements
+// only): s above 1, not emitting (emitters display saturated), large enough, and within
+// maxElements.
 std::vector<uint32_t> elementsToSplit(const RadiosityMesh& valued, const SubdivisionCriteria& criteria);
 
 // The elements that 2:1 balance splits (SubdivisionCriteria::balance): those with an edge that

