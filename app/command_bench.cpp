@@ -22,6 +22,7 @@
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
 
 #include <algorithm>
@@ -86,6 +87,11 @@ void showProgress(double fraction, const std::string& detail, double secondsLeft
   const int filled = int(std::clamp(fraction, 0.0, 1.0) * kWidth + 0.5);
   std::fprintf(stderr, "\r[%s%s] %s, %.0f s left   ", std::string(size_t(filled), '#').c_str(),
                std::string(size_t(kWidth - filled), ' ').c_str(), detail.c_str(), std::max(0.0, secondsLeft));
+}
+
+// The ray tracer that makes the reference image: --reference gather or path-trace.
+RayTracer referenceTracer(const BenchOptions& options) {
+  return options.reference == rayTracerInfo(RayTracer::PathTrace).name ? RayTracer::PathTrace : RayTracer::FinalGather;
 }
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -198,7 +204,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
                    "The reference image: gather (eq. 9.9 per pixel over the solution: the interpolants' trade, the "
                    "solution taken as right) or path-trace (the true image: the solution's error counted too, and "
                    "the final gather a row like the others)")
-      ->check(CLI::IsMember({"gather", kPathTrace}))
+      ->check(CLI::IsMember(std::vector<std::string>{"gather", rayTracerInfo(RayTracer::PathTrace).name}))
       ->capture_default_str();
   command
       ->add_option("--gather-spp", o.gatherRowSpp,
@@ -290,7 +296,7 @@ int runBench(const BenchOptions& options) {
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
   if (!truth)  // the reference of every row
-    checkRayTracingRuns(viewed, options.reference == kPathTrace ? "the path tracer" : "the final gather");
+    checkRayTracingRuns(viewed, "the " + rayTracerInfo(referenceTracer(options)).noun);
   const RadiosityMesh& mesh = viewed.mesh;
   const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
   const double exposureScale = std::exp2(options.exposure);
@@ -405,7 +411,7 @@ int runBench(const BenchOptions& options) {
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
     header << "Reference: " << options.truth << ", exact: every error below is exact, with no interval.\n";
   } else {
-    const bool pathTrace = options.reference == kPathTrace;
+    const bool pathTrace = referenceTracer(options) == RayTracer::PathTrace;
     GatherSettings gather;
     gather.interpolant = methodFromName(options.gatherInterpolant);
     gather.width = width;
@@ -449,11 +455,11 @@ int runBench(const BenchOptions& options) {
       rowEstimate.addPasses(options.gatherRowSpp);
       MeasuredRow measured;
       measured.rayTraced = true;
-      measured.row.method = kFinalGather;
+      measured.row.method = rayTracerInfo(RayTracer::FinalGather).name;
       measured.row.setting = "per pixel, " + std::to_string(options.gatherRowSpp) + " spp";
       measured.row.frameMs = 1e3 * secondsSince(start);
       const LinearImage image = rowEstimate.image();
-      writePng(displayedGather(image, exposureScale), options.outDir + "/" + std::string(kFinalGather) + ".png");
+      writePng(displayedGather(image, exposureScale), options.outDir + "/" + measured.row.method + ".png");
       measured.row.image = rowFileStem(measured.row) + ".exr";
       writeLinearImage(image, options.outDir + "/" + measured.row.image);
       measured.values = reference.rowValues(image);

@@ -8,6 +8,7 @@
 #include "core/strings.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
 
 #include <algorithm>
@@ -112,18 +113,21 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 }
 
 int runRender(const RenderOptions& options) {
+  const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
   const std::string& given = options.gather.givenWithGlMethod;
   const bool gatherOnly = given == "--gather-interpolant" || given == "--emitter-samples";
-  if (!given.empty() && (gatherOnly ? options.display.method != kFinalGather : !isRayTraced(options.display.method)))
-    throw Error(given + (gatherOnly ? " needs --method final-gather" : " needs --method final-gather or path-trace"));
+  if (!given.empty() && (gatherOnly ? tracer != RayTracer::FinalGather : !tracer)) {
+    std::vector<std::string> takers;
+    for (const RayTracerInfo& info : rayTracerRegistry())
+      if (!gatherOnly || info.tracer == RayTracer::FinalGather) takers.push_back(info.name);
+    throw Error(given + " needs --method " + joined(takers, " or "));
+  }
   int width = 0, height = 0;
   parseSize(options.size, width, height);
-  if (isRayTraced(options.display.method)) {
+  if (tracer) {
     checkRayTracedOptions(options.display, options.gather);  // before a scene's solve, not after
-    checkImageMemory(options.size, width, height, kGatherBytesPerPixel,
-                     options.display.method == kPathTrace ? "the path tracer" : "the final gather");
-  }
-  else if (options.display.view == "difference" || !options.linearOut.empty())
+    checkImageMemory(options.size, width, height, kGatherBytesPerPixel, "the " + rayTracerInfo(*tracer).noun);
+  } else if (options.display.view == "difference" || !options.linearOut.empty())
     checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
   else
     checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");
@@ -131,18 +135,18 @@ int runRender(const RenderOptions& options) {
   auto checkOptions = [&](const LoadedFile& file) {
     const Bounds bounds = file.isSolution ? file.mesh.bounds() : file.scene.bounds();
     cameraFromSpec(options.display.camera, bounds, file.scene.cameras);
-    if (!isRayTraced(options.display.method)) settingsFrom(options.display);
+    if (!tracer) settingsFrom(options.display);
   };
+  // A ray tracer that needs no solution (the path tracer) takes the surfaces alone: no solve.
+  const bool solve = !tracer || rayTracerInfo(*tracer).needsSolution;
   const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import,
-                                           // the path tracer takes the surfaces alone: no solve needed
-                                           options.display.method == kPathTrace ? kDirectLight : options.light,
-                                           checkOptions);
+                                           solve ? options.light : kDirectLight, checkOptions);
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
-  if (isRayTraced(options.display.method))
+  if (tracer)
     renderRayTraced(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
   else
     renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
-  if (!viewed.lighting.empty() && options.display.method != kPathTrace)
+  if (!viewed.lighting.empty() && solve)
     std::printf("scene lighting: %s\n", viewed.lighting.c_str());
   return 0;
 }

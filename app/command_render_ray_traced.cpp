@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "gather/final_gather.h"
 #include "gather/path_tracer.h"
+#include "interp/method_registry.h"
 
 #include <memory>
 
@@ -92,8 +93,9 @@ void checkRayTracedOptions(const DisplayOptions& display, const GatherOptions& o
 
 void renderRayTraced(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options, int width,
                      int height, const std::string& out, const std::string& linearOut) {
-  const bool gather = display.method == kFinalGather;
-  const std::string name = gather ? "final gather" : "path tracer";
+  const RayTracer tracer = rayTracerFromName(display.method).value();
+  const bool gather = tracer == RayTracer::FinalGather;
+  const std::string& name = rayTracerInfo(tracer).noun;
   checkRayTracedOptions(display, options);
   checkRayTracingRuns(viewed, "the " + name);
 

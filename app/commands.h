@@ -43,10 +43,6 @@ struct GatherOptions {
   int emitterSamples = 1;               // shadow rays per pixel per pass
   std::string givenWithGlMethod;        // a gather option given without final-gather, for the error
 };
-constexpr const char* kFinalGather = "final-gather";  // the --method that renders by final gather
-constexpr const char* kPathTrace = "path-trace";      // the --method that renders the truth by path tracing
-// A --method drawn by casting rays on the CPU rather than by the GL renderer.
-inline bool isRayTraced(const std::string& method) { return method == kFinalGather || method == kPathTrace; }
 
 struct RenderOptions {
   std::string file;

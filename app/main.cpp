@@ -31,12 +31,10 @@ constexpr const char* kFileHelp =
 
 // `methods`: the --method names the command accepts.
 void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
-  auto offers = [&](const char* name) { return std::find(methods.begin(), methods.end(), name) != methods.end(); };
   std::string help = methodHelp();
-  if (offers(kFinalGather))
-    help += "\n  final-gather: C&W §9.3.1, eq. 9.9 per pixel by ray casting, --gather-interpolant under the integral";
-  if (offers(kPathTrace))
-    help += "\n  path-trace: the true image by path tracing (no solution used): what every method converges to";
+  for (const RayTracerInfo& info : rayTracerRegistry())
+    if (std::find(methods.begin(), methods.end(), info.name) != methods.end())
+      help += "\n  " + info.name + ": " + info.summary + " (" + info.section + ")";
   command.add_option("--method", d.method, help)
       ->check(methodChoice(methods))
       ->capture_default_str();
@@ -147,10 +145,8 @@ int main(int argc, char** argv) {
   app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
-  // Both the window and render show the GL methods and the final gather.
-  std::vector<std::string> methods = methodNames();
-  methods.push_back(kFinalGather);
-  methods.push_back(kPathTrace);
+  // Both the window and render draw with the interpolation methods and the ray tracers.
+  const std::vector<std::string> methods = pictureMethodNames();
   addDisplayOptions(app, viewer.display, methods);
   addGatherOptions(app, viewer.gather,
                    "samples per pixel at which the window's gather stops (key 9 or --method final-gather); "

@@ -9,6 +9,7 @@
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
 #include "edit/edge_picker.h"
+#include "interp/method_registry.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "solve/background_solve.h"
@@ -74,15 +75,17 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   int width = 0, height = 0;
   parseSize(options.size, width, height);
   // The window would have solved a scene in the background; the render solves it first.
-  const bool solve = !viewed.file.isSolution && !options.light.directOnly && options.display.method != kPathTrace;
+  const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
+  const bool needsSolution = !tracer || rayTracerInfo(*tracer).needsSolution;
+  const bool solve = !viewed.file.isSolution && !options.light.directOnly && needsSolution;
   const ViewedFile lit =
       solve ? openForViewing(options.file, options.display.elementSize, options.import, options.light) : ViewedFile{};
   const ViewedFile& shown = solve ? lit : viewed;
-  if (isRayTraced(options.display.method))
+  if (tracer)
     renderRayTraced(shown, options.display, options.gather, width, height, out, "");
   else
     renderHeadless(shown, options.display, width, height, out);
-  if (!shown.lighting.empty() && options.display.method != kPathTrace)
+  if (!shown.lighting.empty() && needsSolution)
     std::printf("scene lighting: %s\n", shown.lighting.c_str());
   return 0;
 }
@@ -359,8 +362,9 @@ int runViewer(const ViewerOptions& options) {
   ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import, kDirectLight);
   // A scene's final gather waits for the solve that starts with the window.
   const bool solveComing = !viewed.file.isSolution && !options.light.directOnly;
-  if (options.display.method == kPathTrace || (options.display.method == kFinalGather && !solveComing))
-    checkRayTracingRuns(viewed, options.display.method == kPathTrace ? "the path tracer" : "the final gather");
+  const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
+  if (tracer && (!rayTracerInfo(*tracer).needsSolution || !solveComing))
+    checkRayTracingRuns(viewed, "the " + rayTracerInfo(*tracer).noun);
 
   glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
   if (!glfwInit()) {
@@ -385,12 +389,11 @@ int runViewer(const ViewerOptions& options) {
   ViewerState state;
   // With --method final-gather or path-trace the GL method is the default one, drawn while the
   // view moves.
-  const bool rayTraced = isRayTraced(options.display.method);
   DisplayOptions glDisplay = options.display;
-  if (rayTraced) glDisplay.method = DisplayOptions().method;
+  if (tracer) glDisplay.method = DisplayOptions().method;
   state.settings = settingsFrom(glDisplay);
-  state.gather.on = rayTraced;
-  state.gather.pathTrace = options.display.method == kPathTrace;
+  state.gather.on = tracer.has_value();
+  state.gather.pathTrace = tracer == RayTracer::PathTrace;
   state.gather.interpolant = methodFromName(options.gather.interpolant);
   state.gather.emitterSamples = options.gather.emitterSamples;
   state.gather.seed = options.gather.seed;

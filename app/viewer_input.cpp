@@ -23,21 +23,18 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     return;
   }
   // GLFW's number keys are their characters' codes.
-  if (const std::optional<Method> method =
-          key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? methodForKey(char(key)) : std::nullopt) {
+  const bool number = key >= GLFW_KEY_0 && key <= GLFW_KEY_9;
+  if (const std::optional<Method> method = number ? methodForKey(char(key)) : std::nullopt) {
     s.settings.method = *method;
     s.gather.on = false;
     return;
   }
+  if (const std::optional<RayTracer> tracer = number ? rayTracerForKey(char(key)) : std::nullopt) {
+    s.gather.on = true;
+    s.gather.pathTrace = *tracer == RayTracer::PathTrace;
+    return;
+  }
   switch (key) {
-    case GLFW_KEY_9:
-      s.gather.on = true;
-      s.gather.pathTrace = false;
-      break;
-    case GLFW_KEY_0:
-      s.gather.on = true;
-      s.gather.pathTrace = true;
-      break;
     case GLFW_KEY_V:
       s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book
                                     ? CloughTocherVariant::AffineInvariant
@@ -55,9 +52,12 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     case GLFW_KEY_T:
       s.settings.tVertices = !s.settings.tVertices;
       break;
-    case GLFW_KEY_C:
-      s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % 4);
+    case GLFW_KEY_C: {
+      // The views before Difference, which needs something to compare with (the panel's).
+      const int cycled = static_cast<int>(gl::DisplayView::Difference);
+      s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % cycled);
       break;
+    }
     case GLFW_KEY_L:
       s.settings.splitLines = !s.settings.splitLines;
       break;

@@ -2,6 +2,7 @@
 
 #include "app/commands.h"
 #include "app/examples.h"
+#include "interp/method_registry.h"
 #include "mesh/display_mesh.h"
 
 #include <imgui.h>
@@ -35,12 +36,13 @@ const std::string& shortcutHelp() {
     std::string keys = "Viewer keys:";
     for (const MethodInfo& info : methodRegistry())
       keys += std::string(int(info.method) == 4 ? "\n" : " ") + info.key + " " + info.label + ",";
+    for (const RayTracerInfo& info : rayTracerRegistry())
+      keys += std::string(" ") + info.key + " " + info.label + " (converging),";
     return keys +
-           " 9 the final gather\n"
-           "(eq. 9.9 per pixel, converging), 0 the path tracer (the true image, converging), V Clough-Tocher's book / affine variant,\n"
-           "P perspective-correct / screen-space Gouraud, E element edges, D discontinuity edges, T T-vertices,\n"
-           "B repair T-vertices (triangulate through them), C false-colour view, L split lines,\n"
-           "W tessellation triangles, H radiosity surface (fig. 9.13), N its control net,\n"
+           "\nV Clough-Tocher's book / affine variant, P perspective-correct / screen-space Gouraud,\n"
+           "E element edges, D discontinuity edges, T T-vertices, B repair T-vertices (triangulate through them),\n"
+           "C false-colour view, L split lines, W tessellation triangles, H radiosity surface (fig. 9.13),\n"
+           "N its control net, "
            "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
            "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder),\n"
            "K edit continuity (click or drag across edges: C1 -> C0 -> C-1), Ctrl+Z undo, Ctrl+S write the solution,\n"
@@ -261,28 +263,24 @@ void drawPanel(ViewerState& state) {
   drawExamples(state);
 
   section("Interpolant (C&W 9.2)");
-  const int kFinalGatherChoice = int(methodRegistry().size());  // after the methods
-  const int kPathTraceChoice = kFinalGatherChoice + 1;
-  int method = !state.gather.on         ? static_cast<int>(state.settings.method)
-               : state.gather.pathTrace ? kPathTraceChoice
-                                        : kFinalGatherChoice;
-  for (const MethodInfo& info : methodRegistry()) {
-    const std::string label = info.label + " [" + info.key + "]";
-    if (int(info.method) % 2) ImGui::SameLine(190);
-    ImGui::RadioButton(label.c_str(), &method, int(info.method));
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", info.summary.c_str(), info.section.c_str());
-  }
-  if (kFinalGatherChoice % 2) ImGui::SameLine(190);
-  ImGui::RadioButton("Final gather [9]", &method, kFinalGatherChoice);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("C&W 9.3.1: eq. 9.9 per pixel by ray casting, converging in the background");
-  if (kPathTraceChoice % 2) ImGui::SameLine(190);
-  ImGui::RadioButton("Path traced [0]", &method, kPathTraceChoice);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("The true image, by path tracing the scene (no solution used): what every method converges to");
-  state.gather.on = method == kFinalGatherChoice || method == kPathTraceChoice;
-  state.gather.pathTrace = method == kPathTraceChoice;
-  if (!state.gather.on) state.settings.method = static_cast<Method>(method);
+  // One radio button per entry of the registry, two to a row: the methods, then the ray tracers
+  // (numbered after the methods), which converge in the background.
+  const int methods = int(methodRegistry().size());
+  const RayTracer shownTracer = state.gather.pathTrace ? RayTracer::PathTrace : RayTracer::FinalGather;
+  int choice = state.gather.on ? methods + int(shownTracer) : int(state.settings.method);
+  auto radio = [&](const std::string& label, char key, int value, const std::string& summary,
+                   const std::string& where) {
+    if (value % 2) ImGui::SameLine(190);
+    ImGui::RadioButton((label + " [" + key + "]").c_str(), &choice, value);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", summary.c_str(), where.c_str());
+  };
+  for (const MethodInfo& info : methodRegistry())
+    radio(info.label, info.key, int(info.method), info.summary, info.section);
+  for (const RayTracerInfo& info : rayTracerRegistry())
+    radio(info.label, info.key, methods + int(info.tracer), info.summary, info.section);
+  state.gather.on = choice >= methods;
+  state.gather.pathTrace = state.gather.on && RayTracer(choice - methods) == RayTracer::PathTrace;
+  if (!state.gather.on) state.settings.method = static_cast<Method>(choice);
   if (state.settings.method == Method::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
     if (ImGui::IsItemHovered())

@@ -32,6 +32,36 @@ const std::vector<MethodInfo>& methodRegistry() {
   return registry;
 }
 
+const std::vector<RayTracerInfo>& rayTracerRegistry() {
+  static const std::vector<RayTracerInfo> registry = {
+      {RayTracer::FinalGather, "final-gather", "Final gather", "final gather", '9', "C&W §9.3.1, eq. 9.9",
+       "per pixel by ray casting over the solution, --gather-interpolant under the integral", true},
+      {RayTracer::PathTrace, "path-trace", "Path traced", "path tracer", '0', "C&W eq. 2.54, the radiosity equation",
+       "the true image by path tracing (no solution used): what every method converges to", false},
+  };
+  return registry;
+}
+
+const RayTracerInfo& rayTracerInfo(RayTracer tracer) { return rayTracerRegistry()[size_t(tracer)]; }
+
+std::optional<RayTracer> rayTracerFromName(const std::string& name) {
+  for (const RayTracerInfo& info : rayTracerRegistry())
+    if (info.name == name) return info.tracer;
+  return std::nullopt;
+}
+
+std::optional<RayTracer> rayTracerForKey(char key) {
+  for (const RayTracerInfo& info : rayTracerRegistry())
+    if (info.key == key) return info.tracer;
+  return std::nullopt;
+}
+
+std::vector<std::string> pictureMethodNames() {
+  std::vector<std::string> names = methodNames();
+  for (const RayTracerInfo& info : rayTracerRegistry()) names.push_back(info.name);
+  return names;
+}
+
 const MethodInfo& methodInfo(Method method) { return methodRegistry()[size_t(method)]; }
 
 const std::string& methodName(Method method) { return methodInfo(method).name; }

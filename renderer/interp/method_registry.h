@@ -1,9 +1,11 @@
 #pragma once
-// Every interpolation method radview shows, in one table (C&W §9.2): its one name on the
-// command line, in files and in messages, its label and key in the viewer, where the book
-// treats it, and what it is. The command line, the panel, the key handler, the help text,
-// `bench`, the CPU interpolants (interpolant.h) and the GPU renderer (gl/mesh_renderer.h) all
-// read it, so a new method is one entry here plus its CPU and GLSL code.
+// Every way radview draws a picture, in one table: the interpolation methods (C&W §9.2), which
+// reconstruct B from the nodal values, and the ray tracers, which estimate it per pixel on the
+// CPU (the final gather of §9.3.1 and the path-traced truth). For each, its one name on the
+// command line (`--method`), in files and in messages, its label and key in the viewer, where
+// the book treats it, and what it is. The command line, the panel, the key handler, the help
+// text, `bench`, the CPU interpolants (interpolant.h) and the GPU renderer (gl/mesh_renderer.h)
+// all read it, so a new method is one entry here plus its CPU and GLSL code.
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,8 +43,33 @@ struct MethodInfo {
   bool bezierPieces() const { return gpu == GpuPath::BezierPieces; }
 };
 
+// The pictures drawn by casting rays per pixel rather than from the nodal values.
+enum class RayTracer : int {
+  FinalGather,  // eq. 9.9 per pixel over the solution (C&W §9.3.1): the interpolants' yardstick
+  PathTrace,    // the radiosity equation itself by path tracing, no solution: the truth
+};
+
+struct RayTracerInfo {
+  RayTracer tracer;
+  std::string name;     // "final-gather": a --method name like the interpolants'
+  std::string label;    // "Final gather": the viewer's
+  std::string noun;     // "final gather": in messages ("the final gather needs ...")
+  char key;             // the viewer's number key
+  std::string section;  // where the book treats it
+  std::string summary;  // one line: --help, the panel's tooltip
+  bool needsSolution;   // integrates the solution's B (the final gather), or needs none
+};
+
 // In enum order.
 const std::vector<MethodInfo>& methodRegistry();
+const std::vector<RayTracerInfo>& rayTracerRegistry();
+const RayTracerInfo& rayTracerInfo(RayTracer tracer);
+// The ray tracer a --method name names; none for an interpolation method's name.
+std::optional<RayTracer> rayTracerFromName(const std::string& name);
+// The ray tracer the viewer's key selects, if any.
+std::optional<RayTracer> rayTracerForKey(char key);
+// Every --method name a picture can be drawn with: the methods', then the ray tracers'.
+std::vector<std::string> pictureMethodNames();
 const MethodInfo& methodInfo(Method method);
 const std::string& methodName(Method method);
 // Every method's name, in enum order; with `viewIndependentOnly`, those a point of the surface
@@ -50,7 +77,7 @@ const std::string& methodName(Method method);
 std::vector<std::string> methodNames(bool viewIndependentOnly = false);
 // A name or an alias. Throws Error naming the known names.
 Method methodFromName(const std::string& name);
-// The method the viewer's key selects ('1' .. '7'), if any.
+// The interpolation method the viewer's key selects, if any.
 std::optional<Method> methodForKey(char key);
 
 }  // namespace radview

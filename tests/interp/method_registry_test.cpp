@@ -1,4 +1,5 @@
-// The one table of methods: what the command line, the panel and the renderers read from it.
+// The one table of methods and ray tracers: what the command line, the panel and the renderers
+// read from it.
 #include "interp/method_registry.h"
 
 #include "core/camera.h"
@@ -25,8 +26,28 @@ TEST(MethodRegistry, EntriesAreInEnumOrderWithOneNameAndKeyEach) {
     EXPECT_TRUE(keys.insert(info.key).second) << "key used twice: " << info.key;
     EXPECT_EQ(methodForKey(info.key), info.method) << info.name;
     EXPECT_FALSE(info.label.empty() || info.summary.empty() || info.section.empty()) << info.name;
+    EXPECT_EQ(rayTracerFromName(info.name), std::nullopt) << info.name;
   }
-  EXPECT_EQ(methodForKey('9'), std::nullopt) << "9 is the final gather, not a method";
+  // The ray tracers share the --method names and the number keys with the methods.
+  for (size_t i = 0; i < rayTracerRegistry().size(); ++i) {
+    const RayTracerInfo& info = rayTracerRegistry()[i];
+    EXPECT_EQ(size_t(info.tracer), i) << info.name;
+    EXPECT_TRUE(names.insert(info.name).second) << "name used twice: " << info.name;
+    EXPECT_TRUE(keys.insert(info.key).second) << "key used twice: " << info.key;
+    EXPECT_EQ(rayTracerForKey(info.key), info.tracer) << info.name;
+    EXPECT_EQ(methodForKey(info.key), std::nullopt) << info.name;
+    EXPECT_EQ(rayTracerFromName(info.name), info.tracer);
+    EXPECT_FALSE(info.label.empty() || info.noun.empty() || info.summary.empty() || info.section.empty()) << info.name;
+  }
+  EXPECT_EQ(rayTracerForKey('9'), RayTracer::FinalGather);
+  EXPECT_EQ(rayTracerForKey('0'), RayTracer::PathTrace);
+  EXPECT_TRUE(rayTracerInfo(RayTracer::FinalGather).needsSolution);
+  EXPECT_FALSE(rayTracerInfo(RayTracer::PathTrace).needsSolution);
+  // --method's names: every method's, then every ray tracer's.
+  const std::vector<std::string> pictures = pictureMethodNames();
+  EXPECT_EQ(pictures.size(), methodRegistry().size() + rayTracerRegistry().size());
+  EXPECT_EQ(pictures[methodRegistry().size()], "final-gather");
+  EXPECT_EQ(pictures.back(), "path-trace");
 }
 
 TEST(MethodRegistry, NamesAndAliasesResolveAndUnknownNamesListTheKnownOnes) {
