@@ -22,8 +22,8 @@ void addSolverOptions(CLI::App& command, SolveSettings& s) {
   command
       .add_option("--interpolation-error", s.subdivision.relativeError,
                   "Solve: subdivision also splits elements where linear interpolation is off by more than this "
-                  "fraction of B at their centre (estimated by Clough-Tocher there), on elements of at least 1 % of "
-                  "display white; 0: off (the spread criterion, --tolerance, alone). 0.005 meshes a converged solve "
+                  "fraction of B at their centre (estimated by Clough-Tocher there; of 1 % of display white where B "
+                  "is darker); 0: off (the spread criterion, --tolerance, alone). 0.005 meshes a converged solve "
                   "to within 0.5 % of the truth")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();

@@ -20,9 +20,9 @@ struct SubdivisionCriteria {
   // viewer shows for the file.
   double tolerance = 8.0;
   // > 0: elements are also split where linear interpolation is off by more than this fraction
-  // of B at their centre (solve/interpolation_error.h), on elements whose B is at least 1 % of
-  // display white: the spread of bright, smooth light is a few display steps where its curvature
-  // makes the interpolant, and the light the element shoots, percents low. 0: spread only.
+  // of B at their centre (solve/interpolation_error.h; of 1 % of display white where B is
+  // darker): the spread of bright, smooth light is a few display steps where its curvature
+  // makes the interpolant, and the light the element shoots, a percent low. 0: spread only.
   double relativeError = 0.0;
   // No element is split whose longest edge is below twice this (its children would be smaller).
   double minElementSize = 0.0;
