@@ -10,15 +10,14 @@
 
 namespace radview {
 
-// Bytes per pixel each kind of image work needs at its peak, measured as the growth of the
-// peak resident set between 2048^2 and 4096^2 renders of the Cornell box (radview's Release
-// build, Mesa llvmpipe, 2026-11-22; bench between 1024^2 and 2048^2), rounded up by about a
+// Bytes per pixel each kind of image work needs at its peak: the growth of the peak resident
+// set between two image sizes of the Cornell box (`/usr/bin/time -f %M`), rounded up by about a
 // quarter. They are estimates for the check below, not promises.
-inline constexpr uint64_t kRenderBytesPerPixel = 40;       // GL render to PNG: measured 31.5
-inline constexpr uint64_t kComparisonBytesPerPixel = 112;  // --view difference or --linear-out: 87.5
-inline constexpr uint64_t kGatherBytesPerPixel = 112;      // the final gather (also the viewer's): 88.6
+inline constexpr uint64_t kRenderBytesPerPixel = 40;       // GL render to PNG
+inline constexpr uint64_t kComparisonBytesPerPixel = 112;  // --view difference or --linear-out
+inline constexpr uint64_t kGatherBytesPerPixel = 112;      // the final gather (also the viewer's)
 // bench: the reference's runs and sums, every row's values (8 a row), the error split's (32 a
-// split row) and the renders: 556 measured with 13 rows, about 1000 with the default 34.
+// split row) and the renders, for the default rows.
 inline constexpr uint64_t kBenchBytesPerPixel = 1024;
 
 // The bytes radview may plan to use: RADVIEW_MAX_MEMORY when set (bytes, or with a K, M or G

@@ -336,8 +336,7 @@ void MeshRenderer::drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, 
   if (!polygonsUploaded_) uploadPolygons();
   // A vertex reads its element's corners once where a pixel would read them for every covered
   // pixel: fewer reads while the draw has fewer vertices than the image has pixels, more beyond
-  // (1080p, radview_scale_bench: bilinear 1.30-1.37x Gouraud's frame time per vertex and
-  // 1.43-1.44x per pixel at 1.2e5 elements, 1.53-1.59x and 1.37-1.38x at 4.6e5).
+  // (radview_scale_bench times both sides of the switch).
   const bool perVertex = mode != PolygonMode::Serendipity && int64_t(vertices) < int64_t(width) * height;
   const ShaderProgram& program = mode == PolygonMode::Scanline && largePolygons_ ? largePolygonScanline_[perVertex]
                                  : perVertex                                     ? polygonProgramsPerVertex_[int(mode)]
