@@ -11,9 +11,8 @@ layout(location = 0) out vec4 radiosity;
 
 void main() {
   vec4 seen = texelFetch(visibility, ivec2(gl_FragCoord.xy), 0);
-  // The background keeps its texel: written back rather than discarded, as with a discard
-  // before them llvmpipe's fetches of the values cost the C1 methods about a tenth of Gouraud's
-  // frame more at 4.6e5 elements (radview_scale_bench).
+  // The background keeps its texel: written back rather than discarded, as a discard before
+  // the fetches of the values slows llvmpipe's C1 frames (radview_scale_bench shows it).
   bool background = seen.x == 0.0;
   int first = max(int(seen.x) - 1, 0) * NET_VEC4S;
   vec4 n[NET_VEC4S];
