@@ -121,7 +121,9 @@ class ReceiverEvents {
                  const CriticalLineTest* criticalLines)
       : receiver_(receiver), out_(out), counts_(counts), criticalLines_(criticalLines) {}
 
-  void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order, const Wedge* wedge = nullptr) {
+  // `gap`: a contact's clearance (EventSegment::gap).
+  void add(const Vec3& x0, const Vec3& x1, EventKind kind, Continuity order, const Wedge* wedge = nullptr,
+           double gap = 0.0) {
     ++counts_.found[int(kind)];
     const Vec2 a = receiver_.frame.project(x0), b = receiver_.frame.project(x1);
     const std::vector<ParameterInterval> clipped = clipSegmentToPolygon(a, b, receiver_.outline, receiver_.tolerance);
@@ -137,7 +139,7 @@ class ReceiverEvents {
     for (const ClearPart& piece : pieces) {
       if (piece.cutAtStart) cutEnds_.push_back({out_.size(), true});
       if (piece.cutAtEnd) cutEnds_.push_back({out_.size(), false});
-      out_.push_back({a + piece.t0 * (b - a), a + piece.t1 * (b - a), order, kind});
+      out_.push_back({a + piece.t0 * (b - a), a + piece.t1 * (b - a), order, kind, gap});
     }
   }
 
@@ -285,6 +287,25 @@ std::vector<std::array<Vec3, 2>> planeContact(const PolygonGeometry& receiver, c
       pieces.push_back({points[k], points[k + 1]});
   }
   return pieces;
+}
+
+// The outline of `other` where it lies flat in front of the receiver (findContacts): every
+// vertex above the receiver's plane, none higher than kFlatFootprintGap of `other`'s size.
+// Returns its edges dropped onto the receiver's plane, and the gap (the highest vertex's
+// height); none for a polygon farther away, touching, or behind.
+std::vector<std::array<Vec3, 2>> flatFootprint(const PolygonGeometry& receiver, const std::vector<Vec3>& vertices,
+                                               const PolygonGeometry& other, double& gap) {
+  gap = 0.0;
+  std::vector<Vec3> dropped;
+  for (const Vec3& p : vertices) {
+    const double h = receiver.height(p);
+    if (!(h > kEventTolerance * std::max(receiver.size, other.size) && h <= kFlatFootprintGap * other.size)) return {};
+    gap = std::max(gap, h);
+    dropped.push_back(p - h * receiver.frame.n);
+  }
+  std::vector<std::array<Vec3, 2>> edges;
+  for (size_t i = 0; i < dropped.size(); ++i) edges.push_back({dropped[i], dropped[(i + 1) % dropped.size()]});
+  return edges;
 }
 
 // The 2D bounding boxes of the receiver and of the occluder's shadow (every occluder vertex
@@ -459,17 +480,21 @@ std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b
 
 namespace {
 
-// D0 on receiver r: every other polygon (emitters too) whose bounding box reaches the receiver's.
+// D0 on receiver r: every other polygon (emitters too) whose bounding box reaches the receiver's,
+// and the flat footprints on it.
 void addContacts(const Scene& scene, const std::vector<PolygonGeometry>& geometry, size_t r, ReceiverEvents& events) {
   const PolygonGeometry& receiver = geometry[r];
   for (size_t p = 0; p < geometry.size(); ++p) {
     if (p == r || !geometry[p].valid) continue;
-    const double slack = kEventTolerance * (receiver.size + geometry[p].size);
+    const double slack = kEventTolerance * (receiver.size + geometry[p].size) + kFlatFootprintGap * geometry[p].size;
     const Bounds& a = receiver.bounds;
     const Bounds& b = geometry[p].bounds;
     if (glm::any(glm::lessThan(a.hi + slack, b.lo)) || glm::any(glm::lessThan(b.hi + slack, a.lo))) continue;
     for (const auto& [x0, x1] : planeContact(receiver, scene.polygons[p].vertices, geometry[p]))
       events.add(x0, x1, EventKind::Contact, Continuity::Cm1);
+    double gap = 0.0;
+    for (const auto& [x0, x1] : flatFootprint(receiver, scene.polygons[p].vertices, geometry[p], gap))
+      events.add(x0, x1, EventKind::Contact, Continuity::Cm1, nullptr, gap);
   }
 }
 

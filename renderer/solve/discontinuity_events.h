@@ -33,6 +33,9 @@ struct EventSegment {
   Vec2 a, b;
   Continuity order = Continuity::C1;
   EventKind kind = EventKind::Contact;
+  // A contact's clearance: 0 where the polygons touch; for a flat footprint (a polygon lying a
+  // hair in front of the receiver, findContacts), its height above the receiver's plane.
+  double gap = 0.0;
 };
 
 struct EventCounts {
@@ -81,8 +84,15 @@ std::vector<std::vector<EventSegment>> findDiscontinuityEvents(const Scene& scen
 constexpr int kCriticalLineSamples = 32;
 
 // The D0 contact segments alone, as findDiscontinuityEvents finds them, on every polygon,
-// emitters included (an emitting floor under a block is covered as any other).
+// emitters included (an emitting floor under a block is covered as any other). Besides the
+// lines where a polygon touches or crosses the receiver's plane, the outline of a flat
+// footprint: a polygon lying wholly in front of the receiver within kFlatFootprintGap of its
+// own size (a light fitted a hair under the ceiling). Behind it the receiver sees almost
+// nothing; at its outline, half of its hemisphere; ten gaps out, all but 0.25 % (a half-plane
+// at height g and distance d covers (1 - d / sqrt(d^2 + g^2)) / 2 of the cosine-weighted
+// hemisphere). To any element much larger than the gap that is a step, C-1, as a contact is.
 std::vector<std::vector<EventSegment>> findContacts(const Scene& scene);
+constexpr double kFlatFootprintGap = 0.01;
 
 // The parts of segment a-b inside a polygon (any simple polygon, concave included), as
 // parameter intervals [t0, t1] of a + t (b - a), sorted; parts within `tolerance` of the

@@ -7,9 +7,11 @@
 // A patch shoots the radiosity of each of its current elements, so that once its elements are
 // subdivided it shoots at their resolution: a patch half in a shadow, or half under a block
 // standing on it, shoots its lit part's light from its lit part only.
+#include "geom/polygon.h"
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 #include "solve/adaptive_subdivision.h"
+#include "solve/discontinuity_events.h"
 #include "solve/patch_sampler.h"
 #include "solve/ray_caster.h"
 
@@ -121,6 +123,10 @@ class ProgressiveRefinement {
   MeshRefiner refiner_;
   std::unique_ptr<RayCaster> rayCaster_;
   std::vector<Vec3> surfaceNormals_;  // of the scene's polygons
+  // Per scene polygon: its plane frame, and the outlines of the flat footprints on it
+  // (findContacts' segments with a gap), near which assignReceivers moves the rays' start.
+  std::vector<PlaneFrame> surfaceFrames_;
+  std::vector<std::vector<EventSegment>> flatFootprints_;
   double sceneDiagonal_ = 0.0;
   std::vector<Patch> patches_;
   // Per element: its patch, its area, the radiosity it has shot (summed over its shots, a child

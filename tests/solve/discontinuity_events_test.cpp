@@ -316,6 +316,41 @@ TEST(DiscontinuityEventsTest, OccludersAboveTheEmitterOrBelowTheReceiverAreCulle
   EXPECT_NE(os.str().find("12 (emitter, occluder, receiver) triples culled"), std::string::npos) << os.str();
 }
 
+TEST(DiscontinuityEventsTest, APolygonLyingAHairInFrontOfAnotherLeavesItsOutlineAsAContact) {
+  // The floor (side 4) with squares lying flat above it: one at 1e-3 of its side, one at 2e-2
+  // (more than kFlatFootprintGap of its size, an ordinary occluder), one underneath the floor.
+  Scene scene;
+  scene.materials = {{"white", {0.5, 0.5, 0.5}, {0, 0, 0}}};
+  scene.polygons.push_back({square(4.0, 0.0, true), 0});
+  scene.polygons.push_back({square(1.0, 1e-3, false), 0});
+  Scene far = scene, below = scene;
+  far.polygons[1] = {square(1.0, 2e-2, false), 0};
+  below.polygons[1] = {square(1.0, -1e-3, true), 0};
+  const std::vector<std::vector<EventSegment>> contacts = findContacts(scene);
+  ASSERT_EQ(contacts[0].size(), 4u) << "the square's four edges, on the floor";
+  for (const EventSegment& edge : contacts[0]) {
+    EXPECT_EQ(edge.order, Continuity::Cm1);
+    EXPECT_NEAR(edge.gap, 1e-3, 1e-15);
+    EXPECT_NEAR(glm::distance(edge.a, edge.b), 1.0, 1e-12);
+    // Each end is a corner of the square, in the floor's own frame.
+    const PlaneFrame frame = planeFrame(scene.polygons[0].vertices);
+    for (const Vec2& end : {edge.a, edge.b}) {
+      double nearest = 1e9;
+      for (const Vec3& v : scene.polygons[1].vertices) nearest = std::min(nearest, glm::distance(end, frame.project(v)));
+      EXPECT_LT(nearest, 1e-12);
+    }
+  }
+  EXPECT_TRUE(contacts[1].empty()) << "the floor's outline, dropped onto the square, lies outside it";
+  EXPECT_TRUE(findContacts(far)[0].empty());
+  EXPECT_TRUE(findContacts(below)[0].empty());
+  // Touching contacts keep a gap of 0.
+  Scene standing = scene;
+  standing.polygons[1] = {{{-0.5, 0, 0}, {0.5, 0, 0}, {0.5, 0, 1}, {-0.5, 0, 1}}, 0};
+  const std::vector<EventSegment> foot = findContacts(standing)[0];
+  ASSERT_EQ(foot.size(), 1u);
+  EXPECT_EQ(foot[0].gap, 0.0);
+}
+
 TEST(DiscontinuityEventsTest, ClipSegmentToConcavePolygonKeepsTheInsidePartsOnly) {
   // An L: the segment y = 1.5 crosses the notch [1, 2] x [1, 2].
   const std::vector<Vec2> ell = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};

@@ -166,7 +166,7 @@ TEST(DiscontinuityMesherTest, CornellBoxHasFootprintsAsCm1AndRoundTripsThroughAS
   EXPECT_EQ(topology.countEdges(Continuity::Cm1), report.edgesCm1);
   EXPECT_EQ(topology.countEdges(Continuity::C0), report.edgesC0);
   EXPECT_GT(report.eventsInserted, 0u);
-  EXPECT_EQ(report.segmentsCm1, 8u);  // four footprint edges per block
+  EXPECT_EQ(report.segmentsCm1, 12u);  // four footprint edges per block, and the light's outline on the ceiling
   EXPECT_EQ(report.segmentsDropped, 0u);
   EXPECT_EQ(report.refinementCapped, 0u);
 

@@ -26,8 +26,10 @@ struct SurfaceAgreement {
 
 // Per surface of the Cornell box, B^ of `settings`' solve, drawn by Gouraud, against the path
 // tracer at `points` area-uniform points, `paths` paths each; prints each surface's ratio and
-// expects it within `tolerance` of 1, with 4 standard errors of slack for the estimate.
-void expectSolveAgreesWithTheTruth(const SolveSettings& settings, int points, int paths, double tolerance) {
+// expects it within `tolerance` of 1 (or the surface's entry in `wider`), with 4 standard errors
+// of slack for the estimate.
+void expectSolveAgreesWithTheTruth(const SolveSettings& settings, int points, int paths, double tolerance,
+                                   const std::map<int, double>& wider = {}) {
   const Scene scene = loadFile(RADVIEW_SOURCE_DIR "/assets/cornell_box.gltf").scene;
   SolveSummary summary;
   const RadiosityMesh mesh = solveRadiosity(scene, settings, summary);
@@ -84,7 +86,8 @@ void expectSolveAgreesWithTheTruth(const SolveSettings& settings, int points, in
     std::printf("surface %2d (%s): solution / truth %.4f +- %.4f\n", surface, material.name.c_str(),
                 agreement.ratio(), agreement.standardError);
     if (agreement.truth <= 0.0) continue;
-    EXPECT_NEAR(agreement.ratio(), 1.0, tolerance + 4.0 * agreement.standardError) << "surface " << surface;
+    const double allowed = wider.count(surface) ? wider.at(surface) : tolerance;
+    EXPECT_NEAR(agreement.ratio(), 1.0, allowed + 4.0 * agreement.standardError) << "surface " << surface;
   }
 }
 
@@ -114,16 +117,18 @@ TEST(SolveTruth, ConvergedSolveWithDiscontinuityMeshingIsWithinHalfAPercentOnEve
   expectSolveAgreesWithTheTruth(converged(true), 4000, 256, 0.005);
 }
 
-// Without discontinuity meshing the ceiling is 0.7 % low, half of that within a centimetre of
-// the light's outline: the light hangs 0.1 mm below the ceiling, and the ceiling's elements
-// along its outline have nodes behind it or a hair from its edge, where it hides much of the
-// hemisphere, and spread their dark over centimetres. Held at 1 % until that is resolved;
-// every other surface is within 0.5 %.
-TEST(SolveTruth, ConvergedSolveWithoutDiscontinuityMeshingIsWithinOnePercentOnEverySurface) {
+// The same without discontinuity meshing: the uniform mesh cut at the contacts and along the
+// light's outline on the ceiling (a flat footprint, findContacts), refined by the same criteria.
+// Every surface within 0.5 % but the short block's front (surface 9), which faces away from the
+// light and sees mostly the floor in the block's own shadow: 0.7 % bright, most of it in a band
+// 0.5-2 cm above the floor, where the uniform mesh's elements straddle the shadow's edges on the
+// floor in front. Held at 1 % there.
+TEST(SolveTruth, ConvergedSolveWithoutDiscontinuityMeshingIsWithinHalfAPercentOnEverySurfaceButOne) {
 #ifdef RADVIEW_SANITIZE
   GTEST_SKIP() << "a converged solve takes minutes under the sanitizers; the Release build runs this test";
 #endif
-  expectSolveAgreesWithTheTruth(converged(false), 4000, 256, 0.01);
+  const int shortBlockFront = 9;
+  expectSolveAgreesWithTheTruth(converged(false), 4000, 256, 0.005, {{shortBlockFront, 0.01}});
 }
 
 }  // namespace
