@@ -7,6 +7,7 @@
 #include "app/examples.h"
 #include "app/import_flags.h"
 #include "app/method_choice.h"
+#include "app/viewer_keys.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
 #include "core/error.h"
@@ -29,6 +30,13 @@ constexpr const char* kFileHelp =
     "A glTF scene (.gltf/.glb), a radview solution file, or another tool's mesh with vertex colours "
     "(.ply, .obj, glTF with COLOR_0, ...)";
 
+// --view's help: every view's name and what it shows (gl/display_views.h).
+std::string displayViewHelp() {
+  std::vector<std::string> views;
+  for (const gl::DisplayViewInfo& info : gl::displayViewRegistry()) views.push_back(info.name + " (" + info.summary + ")");
+  return "What the display shows: " + joined(views) + "; difference needs --compare-with or --reference";
+}
+
 // `methods`: the --method names the command accepts.
 void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<std::string>& methods) {
   std::string help = methodHelp();
@@ -49,9 +57,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
                          "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
   command
-      .add_option("--view", d.view,
-                  "normal; or false colour: value (with a colour bar), gradient (its magnitude per pixel: "
-                  "Mach bands are jumps in it), isolines, difference (against --compare-with or --reference)")
+      .add_option("--view", d.view, displayViewHelp())
       ->check(CLI::IsMember(gl::displayViewNames()))
       ->capture_default_str();
   command
@@ -229,6 +235,9 @@ int main(int argc, char** argv) {
   BenchOptions bench;
   CLI::App* benchCommand = addBenchCommand(app, bench);
 
+  CLI::App* keysCommand =
+      app.add_subcommand("keys", "Print the viewer's keys and mouse as a Markdown table (README's list is this)");
+
   CLI11_PARSE(app, argc, argv);
   viewer.framesWaitForSpp = app.count("--spp") > 0;
   // The final gather's own options first, so that one of them is named where it is misplaced.
@@ -242,6 +251,10 @@ int main(int argc, char** argv) {
     if (*exportCommand) return runExport(exportOptions);
     if (*solveCommand) return runSolve(solve);
     if (*benchCommand) return runBench(bench);
+    if (*keysCommand) {
+      std::fputs(keysMarkdown().c_str(), stdout);
+      return 0;
+    }
     if (viewer.file.empty()) viewer.file = examplePath(bundledExamples().front());
     // A bundled example opens the way that shows what it demonstrates, unless told otherwise.
     if (const Example* example = exampleForFile(viewer.file); example && app.count("--method") == 0) {

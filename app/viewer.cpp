@@ -428,6 +428,7 @@ int runViewer(const ViewerOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const bool lastFrame = options.frames > 0 && frame >= options.frames;
     glfwPollEvents();
+    if (state.quitRequested) glfwSetWindowShouldClose(window, GLFW_TRUE);
     handleDrag(window, input);
     work.handleOpen(state, input, options.display.elementSize, options.import);
     int fbWidth = 0, fbHeight = 0, windowWidth = 0, windowHeight = 0;

@@ -1,5 +1,6 @@
 #include "app/viewer_input.h"
 
+#include "app/viewer_keys.h"
 #include "interp/method_registry.h"
 
 #define GLFW_INCLUDE_NONE
@@ -17,13 +18,8 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
   if (action != GLFW_PRESS && action != GLFW_REPEAT) return;
   if (ImGui::GetIO().WantCaptureKeyboard) return;
   ViewerState& s = *static_cast<ViewerInput*>(glfwGetWindowUserPointer(window))->state;
-  if (mods & GLFW_MOD_CONTROL) {
-    if (key == GLFW_KEY_Z) s.undoRequested = true;
-    if (key == GLFW_KEY_S) s.writeSolutionRequested = true;
-    return;
-  }
   // GLFW's number keys are their characters' codes.
-  const bool number = key >= GLFW_KEY_0 && key <= GLFW_KEY_9;
+  const bool number = key >= GLFW_KEY_0 && key <= GLFW_KEY_9 && !(mods & GLFW_MOD_CONTROL);
   if (const std::optional<Method> method = number ? methodForKey(char(key)) : std::nullopt) {
     s.settings.method = *method;
     s.gather.on = false;
@@ -34,77 +30,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int mods) {
     s.gather.pathTrace = *tracer == RayTracer::PathTrace;
     return;
   }
-  switch (key) {
-    case GLFW_KEY_V:
-      s.settings.cloughTocher = s.settings.cloughTocher == CloughTocherVariant::Book
-                                    ? CloughTocherVariant::AffineInvariant
-                                    : CloughTocherVariant::Book;
-      break;
-    case GLFW_KEY_P:
-      s.settings.perspectiveCorrect = !s.settings.perspectiveCorrect;
-      break;
-    case GLFW_KEY_E:
-      s.settings.elementEdges = !s.settings.elementEdges;
-      break;
-    case GLFW_KEY_D:
-      s.settings.discontinuityEdges = !s.settings.discontinuityEdges;
-      break;
-    case GLFW_KEY_T:
-      s.settings.tVertices = !s.settings.tVertices;
-      break;
-    case GLFW_KEY_C: {
-      // The views before Difference, which needs something to compare with (the panel's).
-      const int cycled = static_cast<int>(gl::DisplayView::Difference);
-      s.settings.view = static_cast<gl::DisplayView>((static_cast<int>(s.settings.view) + 1) % cycled);
-      break;
-    }
-    case GLFW_KEY_L:
-      s.settings.splitLines = !s.settings.splitLines;
-      break;
-    case GLFW_KEY_H:
-      s.settings.surfaceHeight = s.settings.surfaceHeight > 0.0 ? 0.0 : 0.15;
-      break;
-    case GLFW_KEY_W:
-      s.settings.tessellationTriangles = !s.settings.tessellationTriangles;
-      break;
-    case GLFW_KEY_G:
-      (s.solving ? s.cancelSolveRequested : s.solveRequested) = true;
-      break;
-    case GLFW_KEY_N:
-      s.settings.controlNet = !s.settings.controlNet;
-      break;
-    case GLFW_KEY_B:
-      s.settings.repairTVertices = !s.settings.repairTVertices;
-      break;
-    case GLFW_KEY_R:
-      rotateView45(s);
-      break;
-    case GLFW_KEY_F:
-      resetCamera(s);
-      break;
-    case GLFW_KEY_S:
-      s.screenshotRequested = true;
-      break;
-    case GLFW_KEY_EQUAL:
-    case GLFW_KEY_KP_ADD:
-      s.settings.exposure += 0.5;
-      break;
-    case GLFW_KEY_MINUS:
-    case GLFW_KEY_KP_SUBTRACT:
-      s.settings.exposure -= 0.5;
-      break;
-    case GLFW_KEY_K:
-      setContinuityEditing(s, !s.editContinuity);
-      break;
-    case GLFW_KEY_TAB:
-      s.panelShown = !s.panelShown;
-      break;
-    case GLFW_KEY_ESCAPE:
-      glfwSetWindowShouldClose(window, GLFW_TRUE);
-      break;
-    default:
-      break;
-  }
+  if (const ViewerKey* pressed = viewerKeyFor(key, (mods & GLFW_MOD_CONTROL) != 0)) pressed->apply(s);
 }
 
 void onScroll(GLFWwindow* window, double, double dy) {

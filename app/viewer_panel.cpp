@@ -1,5 +1,7 @@
 #include "app/viewer_panel.h"
 
+#include "app/viewer_keys.h"
+
 #include "app/commands.h"
 #include "app/examples.h"
 #include "interp/method_registry.h"
@@ -29,29 +31,6 @@ void setContinuityEditing(ViewerState& state, bool on) {
 void resetCamera(ViewerState& state) {
   state.camera = state.homeCamera;
   state.rollSteps = 0;
-}
-
-const std::string& shortcutHelp() {
-  static const std::string help = [] {
-    std::string keys = "Viewer keys:";
-    for (const MethodInfo& info : methodRegistry())
-      keys += std::string(int(info.method) == 4 ? "\n" : " ") + info.key + " " + info.label + ",";
-    for (const RayTracerInfo& info : rayTracerRegistry())
-      keys += std::string(" ") + info.key + " " + info.label + " (converging),";
-    return keys +
-           "\nV Clough-Tocher's book / affine variant, P perspective-correct / screen-space Gouraud,\n"
-           "E element edges, D discontinuity edges, T T-vertices, B repair T-vertices (triangulate through them),\n"
-           "C false-colour view, L split lines, W tessellation triangles, H radiosity surface (fig. 9.13),\n"
-           "N its control net, "
-           "R rotate view 45 degrees clockwise (fig. 9.8), F reset camera, +/- exposure by 1/2 stop,\n"
-           "G solve the scene in the background (or cancel), S screenshot (PNG in the current folder),\n"
-           "K edit continuity (click or drag across edges: C1 -> C0 -> C-1), Ctrl+Z undo, Ctrl+S write the solution,\n"
-           "Tab hide or show the panel, Esc quit.\n"
-           "Mouse: left drag orbit, right or middle drag pan, wheel zoom. Drop a .gltf, .glb, .ply or .obj file on the "
-           "window to "
-           "open it.";
-  }();
-  return help;
 }
 
 namespace {
@@ -328,10 +307,14 @@ void drawPanel(ViewerState& state) {
   ImGui::PushItemWidth(200);
   if (ImGui::SliderFloat("Exposure, stops", &exposure, -10.0f, 10.0f, "%.1f")) state.settings.exposure = exposure;
   ImGui::PopItemWidth();
-  int view = static_cast<int>(state.settings.view);
   ImGui::PushItemWidth(200);
-  ImGui::Combo("View [C]", &view, "Normal\0Value, false colour\0Gradient magnitude\0Isolines\0Difference\0");
-  state.settings.view = static_cast<gl::DisplayView>(view);
+  if (ImGui::BeginCombo("View [C]", gl::displayViewInfo(state.settings.view).label.c_str())) {
+    for (const gl::DisplayViewInfo& info : gl::displayViewRegistry()) {
+      if (ImGui::Selectable(info.label.c_str(), info.view == state.settings.view)) state.settings.view = info.view;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (--view %s)", info.summary.c_str(), info.name.c_str());
+    }
+    ImGui::EndCombo();
+  }
   if (state.settings.view == gl::DisplayView::GradientMagnitude) {
     float scale = float(state.settings.gradientScale);
     if (ImGui::SliderFloat("Scale top, per pixel", &scale, 0.001f, 0.2f, "%.3f", ImGuiSliderFlags_Logarithmic))

@@ -63,6 +63,7 @@ struct ViewerState {
   bool editContinuity = false;
   std::vector<std::pair<double, double>> stroke;  // a finished click or drag, window coordinates
   bool undoRequested = false;
+  bool quitRequested = false;  // Esc: the loop closes the window
   size_t undoSteps = 0;
   std::optional<EdgeRef> pickedEdge;  // the last edge retagged, described in the panel
   std::string pickedDescription;
@@ -73,8 +74,6 @@ void rotateView45(ViewerState& state);
 void setContinuityEditing(ViewerState& state, bool on);
 void resetCamera(ViewerState& state);
 
-// Keyboard shortcuts, as listed in the panel and in --help.
-const std::string& shortcutHelp();
 
 // The panel's width before scaling to the monitor's content scale.
 constexpr float kPanelWidth = 400.0f;

@@ -14,18 +14,6 @@
 
 namespace radview::gl {
 
-const std::vector<std::string>& displayViewNames() {
-  static const std::vector<std::string> names = {"normal", "value", "gradient", "isolines", "difference"};
-  return names;
-}
-
-DisplayView displayViewFromName(const std::string& name) {
-  const auto& names = displayViewNames();
-  for (size_t i = 0; i < names.size(); ++i)
-    if (names[i] == name) return static_cast<DisplayView>(i);
-  throw Error("unknown display view '" + name + "' (expected one of " + joined(names) + ")");
-}
-
 namespace {
 
 // RGBA pixels of a framebuffer's colour buffer, top row first (OpenGL reads bottom-up).
@@ -154,16 +142,15 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
 namespace {
 
 int piecesKey(Method method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
-int degreeOf(Method method) { return method == Method::CloughTocher ? 3 : 2; }
 
 }  // namespace
 
 bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation) {
-  return (method == Method::C1Quadratic || method == Method::CloughTocher) && evaluation.tessellation == 0;
+  return resolvesDeferred(methodInfo(method).gpu) && evaluation.tessellation == 0;
 }
 
 bool MeshRenderer::isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation) {
-  return method == Method::Quadratic && evaluation.tessellation == 0;
+  return methodInfo(method).gpu == GpuPass::LagrangePieces && evaluation.tessellation == 0;
 }
 
 void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEvaluation& evaluation) {
@@ -183,7 +170,7 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEva
   bezierPass_.upload(quadraticTriangles ? quadraticTriangleVertices(*mesh_)
                                         : pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
                                                         settings.splitLines ? &split : nullptr),
-                     degreeOf(settings.method));
+                     pieceDegree(methodInfo(settings.method).gpu));
   patchesFor_ = wanted;
   uploadSplit(split, settings.splitLines ? wanted : -1);
 }
@@ -193,7 +180,7 @@ std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& s
   const int key = piecesKey(settings.method, settings.cloughTocher);
   const bool built = deferredFor_ == key && (!settings.splitLines || splitFor_ == key);
   if (built || hasShownImage() || settings.repairTVertices != repairedDrawn_ || settings.tessellation != 0 ||
-      !flatSurface || (settings.method != Method::C1Quadratic && settings.method != Method::CloughTocher))
+      !flatSurface || !resolvesDeferred(methodInfo(settings.method).gpu))
     return {};
   return [mesh = mesh_, topology = topology_, method = settings.method, variant = settings.cloughTocher] {
     return prepareDeferred(mesh, topology, method, variant);
@@ -249,53 +236,79 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // radiosity surfaces are seen from both sides in a viewer
-  const GpuPath path = methodInfo(method).gpu;
-  if (path == GpuPath::Triangles) {
-    meshProgram_.set("clipFromWorld", clipFromWorld);
-    meshProgram_.set("method", static_cast<int>(method));
-    meshProgram_.set("perspectiveCorrect", settings.perspectiveCorrect ? 1 : 0);
-    meshProgram_.use();
-    glBindVertexArray(meshVao_);
-    glDrawArrays(GL_TRIANGLES, 0, triangleVertices_);
-  } else if (path == GpuPath::Polygons) {
-    drawPolygons(method == Method::ScanlineGouraud ? PolygonMode::Scanline : PolygonMode::Bilinear, meshVao_,
-                 triangleVertices_, clipFromWorld, width, height);
-  } else if (isQuadraticPerPixel(method, bezierEvaluation(settings, camera))) {
-    // Linear elements are linear under the quadratic method too: Gouraud's triangles,
-    // perspective-correct; then the 6-node triangles' pieces and the serendipity quads.
-    meshProgram_.set("clipFromWorld", clipFromWorld);
-    meshProgram_.set("method", static_cast<int>(Method::Gouraud));
-    meshProgram_.set("perspectiveCorrect", 1);
-    meshProgram_.use();
-    glBindVertexArray(meshVao_);
-    glDrawArrays(GL_TRIANGLES, 0, linearForQuadraticVertices_);
-    BezierPass& pass = comparison && patchesFor_ != kQuadraticTrianglesKey ? comparisonPass_ : bezierPass_;
-    if (!pass.vertices().empty()) pass.draw(clipFromWorld, bezierEvaluation(settings, camera));
-    if (serendipityVertices_ > 0)
-      drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
-    const size_t pieces = size_t(linearForQuadraticVertices_ + serendipityVertices_) / 3 + pass.vertices().size() / 3;
-    statistics_ = {pieces, 3, 1.0, pieces};
-  } else if (isDeferred(method, bezierEvaluation(settings, camera))) {
-    // The comparison shares the method's pieces when it is the same method per pixel.
-    const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
-    DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
-    if (depthOnly)
-      pass.drawDepth(clipFromWorld);
-    else
-      pass.draw(clipFromWorld, GLuint(framebuffer));
-    statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
-  } else {
-    BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;
-    BezierEvaluation evaluation = bezierEvaluation(settings, camera);
-    // Serendipity quads are exact per pixel in the polygon pass; the radiosity surface draws
-    // them from their (linear) pieces, which it can lift.
-    const bool serendipityPass = method == Method::Quadratic && evaluation.surfaceHeight == 0.0;
-    if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
-    pass.draw(clipFromWorld, evaluation);
-    statistics_ = pass.statistics();
-    if (serendipityPass && serendipityVertices_ > 0)
-      drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
+  const BezierEvaluation evaluation = bezierEvaluation(settings, camera);
+  switch (methodInfo(method).gpu) {
+    case GpuPass::Triangles:
+      drawTriangles(method, settings.perspectiveCorrect, clipFromWorld, triangleVertices_);
+      break;
+    case GpuPass::ScanlinePolygons:
+      drawPolygons(PolygonMode::Scanline, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      break;
+    case GpuPass::BilinearPolygons:
+      drawPolygons(PolygonMode::Bilinear, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      break;
+    case GpuPass::LagrangePieces:
+      if (isQuadraticPerPixel(method, evaluation))
+        drawQuadraticPerPixel(evaluation, clipFromWorld, width, height, comparison);
+      else
+        drawTessellated(method, settings, evaluation, clipFromWorld, width, height);
+      break;
+    case GpuPass::PowellSabinPieces:
+    case GpuPass::CloughTocherPieces:
+      if (isDeferred(method, evaluation))
+        drawDeferred(method, settings, clipFromWorld, GLuint(framebuffer), comparison, depthOnly);
+      else
+        drawTessellated(method, settings, evaluation, clipFromWorld, width, height);
+      break;
   }
+}
+
+void MeshRenderer::drawTriangles(Method method, bool perspectiveCorrect, const glm::mat4& clipFromWorld,
+                                 GLsizei vertices) {
+  meshProgram_.set("clipFromWorld", clipFromWorld);
+  meshProgram_.set("method", static_cast<int>(method));
+  meshProgram_.set("perspectiveCorrect", perspectiveCorrect ? 1 : 0);
+  meshProgram_.use();
+  glBindVertexArray(meshVao_);
+  glDrawArrays(GL_TRIANGLES, 0, vertices);
+}
+
+// Linear elements are linear under the quadratic method too: Gouraud's triangles,
+// perspective-correct; then the 6-node triangles' pieces and the serendipity quads.
+void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld,
+                                         int width, int height, bool comparison) {
+  drawTriangles(Method::Gouraud, true, clipFromWorld, linearForQuadraticVertices_);
+  BezierPass& pass = comparison && patchesFor_ != kQuadraticTrianglesKey ? comparisonPass_ : bezierPass_;
+  if (!pass.vertices().empty()) pass.draw(clipFromWorld, evaluation);
+  if (serendipityVertices_ > 0)
+    drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
+  const size_t pieces = size_t(linearForQuadraticVertices_ + serendipityVertices_) / 3 + pass.vertices().size() / 3;
+  statistics_ = {pieces, 3, 1.0, pieces};
+}
+
+void MeshRenderer::drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld,
+                                GLuint framebuffer, bool comparison, bool depthOnly) {
+  // The comparison shares the method's pieces when it is the same method per pixel.
+  const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
+  DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
+  if (depthOnly)
+    pass.drawDepth(clipFromWorld);
+  else
+    pass.draw(clipFromWorld, framebuffer);
+  statistics_ = {pass.triangles(), 2, 1.0, pass.triangles()};
+}
+
+void MeshRenderer::drawTessellated(Method method, const RenderSettings& settings, BezierEvaluation evaluation,
+                                   const glm::mat4& clipFromWorld, int width, int height) {
+  BezierPass& pass = method == settings.method ? bezierPass_ : comparisonPass_;
+  // Serendipity quads are exact per pixel in the polygon pass; the radiosity surface draws
+  // them from their (linear) pieces, which it can lift.
+  const bool serendipityPass = methodInfo(method).gpu == GpuPass::LagrangePieces && evaluation.surfaceHeight == 0.0;
+  if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
+  pass.draw(clipFromWorld, evaluation);
+  statistics_ = pass.statistics();
+  if (serendipityPass && serendipityVertices_ > 0)
+    drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
 }
 
 void MeshRenderer::uploadPolygons() {

@@ -9,6 +9,7 @@
 #include "gl/bezier_pass.h"
 #include "gl/buffer_storage.h"
 #include "gl/deferred_pass.h"
+#include "gl/display_views.h"
 #include "gl/gl_object.h"
 #include "gl/prepared_mesh.h"
 #include "gl/render_targets.h"
@@ -26,18 +27,6 @@
 #include <vector>
 
 namespace radview::gl {
-
-// What the display shows of the linear radiosity.
-enum class DisplayView : int {
-  Normal,             // exposure and sRGB
-  Value,              // the displayed luminance on a colour scale, with a colour bar
-  GradientMagnitude,  // of the displayed luminance per pixel: Mach bands are jumps in it
-  Isolines,           // the normal display with lines between luminance levels
-  Difference,         // displayed luminance minus a comparison's: another method, or an image
-};
-// "normal", "value", "gradient", "isolines", "difference"
-const std::vector<std::string>& displayViewNames();
-DisplayView displayViewFromName(const std::string& name);  // throws Error
 
 struct RenderSettings {
   Method method = Method::Gouraud;
@@ -185,6 +174,14 @@ class MeshRenderer {
   // pass for its 6-node triangles alone (kQuadraticTrianglesKey), the polygon pass for its
   // serendipity quads.
   static bool isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation);
+  // drawRadiosity's passes, one per way a method is drawn (MethodInfo::gpu).
+  void drawTriangles(Method method, bool perspectiveCorrect, const glm::mat4& clipFromWorld, GLsizei vertices);
+  void drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width,
+                             int height, bool comparison);
+  void drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld,
+                    GLuint framebuffer, bool comparison, bool depthOnly);
+  void drawTessellated(Method method, const RenderSettings& settings, BezierEvaluation evaluation,
+                       const glm::mat4& clipFromWorld, int width, int height);
   static constexpr int kQuadraticTrianglesKey = 1 << 20;  // a Bezier pass's key: beyond every piecesKey
   GLsizei linearForQuadraticVertices_ = 0;
   // A frame's passes, in order. What can throw is uploaded first (the mesh when T-vertex repair

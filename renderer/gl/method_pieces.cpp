@@ -1,5 +1,6 @@
 #include "gl/method_pieces.h"
 
+#include "core/error.h"
 #include "core/parallel_for.h"
 #include "gl/patch_nets.h"
 #include "gl/patch_vertices.h"
@@ -9,17 +10,27 @@ namespace radview::gl {
 
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
                                         Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split) {
-  if (method == Method::Quadratic) return quadraticLagrangeVertices(mesh, *topology);  // its serendipity quads last
-  const SurfaceTriangulation surface(mesh, topology);
-  const CornerGradients gradients = vertexGradients(surface, true);
-  if (method == Method::CloughTocher) {
-    const auto patches = buildCloughTocherPatches(surface, gradients, variant);
-    if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
-    return cloughTocherVertices(patches);
+  switch (methodInfo(method).gpu) {
+    case GpuPass::Triangles:
+    case GpuPass::ScanlinePolygons:
+    case GpuPass::BilinearPolygons:
+      return {};
+    case GpuPass::LagrangePieces:
+      return quadraticLagrangeVertices(mesh, *topology);  // its serendipity quads last
+    case GpuPass::PowellSabinPieces: {
+      const SurfaceTriangulation surface(mesh, topology);
+      const auto patches = buildPowellSabinPatches(surface, vertexGradients(surface, true));
+      if (split) *split = splitLines(patches, kPowellSabinSplitPoints);
+      return powellSabinVertices(patches);
+    }
+    case GpuPass::CloughTocherPieces: {
+      const SurfaceTriangulation surface(mesh, topology);
+      const auto patches = buildCloughTocherPatches(surface, vertexGradients(surface, true), variant);
+      if (split) *split = splitLines(patches, kCloughTocherSplitPoints);
+      return cloughTocherVertices(patches);
+    }
   }
-  const auto patches = buildPowellSabinPatches(surface, gradients);
-  if (split) *split = splitLines(patches, kPowellSabinSplitPoints);
-  return powellSabinVertices(patches);
+  return {};
 }
 
 namespace {
@@ -54,14 +65,22 @@ DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::sh
 void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<glm::vec3>* split) {
   const SurfaceTriangulation& surface = *setup.surface;
   const size_t triangles = surface.triangles().size();
-  if (setup.method == Method::CloughTocher) {
-    streamPatches(
-        pass, triangles, 3, kCloughTocherSplitPoints,
-        [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
-  } else {
-    streamPatches(
-        pass, triangles, 2, kPowellSabinSplitPoints,
-        [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, t); }, split);
+  switch (methodInfo(setup.method).gpu) {
+    case GpuPass::Triangles:
+    case GpuPass::ScanlinePolygons:
+    case GpuPass::BilinearPolygons:
+    case GpuPass::LagrangePieces:
+      throw Error("the deferred pass resolves Bezier pieces: " + methodName(setup.method) + " has none to resolve");
+    case GpuPass::PowellSabinPieces:
+      streamPatches(
+          pass, triangles, 2, kPowellSabinSplitPoints,
+          [&](uint32_t t) { return powellSabinPatch(surface, setup.gradients, t); }, split);
+      break;
+    case GpuPass::CloughTocherPieces:
+      streamPatches(
+          pass, triangles, 3, kCloughTocherSplitPoints,
+          [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
+      break;
   }
 }
 

@@ -17,7 +17,8 @@
 
 namespace radview::gl {
 
-// The pieces as the Bezier pass draws them, and when `split` is given the lines that split
+// The pieces as the Bezier pass draws them (which pieces: the method's MethodInfo::gpu; none for a
+// method drawn without pieces), and when `split` is given the lines that split
 // elements into them (none for quadratic elements).
 // `topology` is the mesh's own, shared with the triangulation the pieces are built on.
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,

@@ -5,29 +5,60 @@
 
 namespace radview {
 
+bool drawsPieces(GpuPass pass) { return pieceDegree(pass) > 0; }
+
+int pieceDegree(GpuPass pass) {
+  switch (pass) {
+    case GpuPass::Triangles:
+    case GpuPass::ScanlinePolygons:
+    case GpuPass::BilinearPolygons:
+      return 0;
+    case GpuPass::LagrangePieces:
+    case GpuPass::PowellSabinPieces:
+      return 2;
+    case GpuPass::CloughTocherPieces:
+      return 3;
+  }
+  return 0;
+}
+
+bool resolvesDeferred(GpuPass pass) {
+  switch (pass) {
+    case GpuPass::Triangles:
+    case GpuPass::ScanlinePolygons:
+    case GpuPass::BilinearPolygons:
+    case GpuPass::LagrangePieces:  // per pixel: Lagrange triangles and serendipity quads drawn as they are
+      return false;
+    case GpuPass::PowellSabinPieces:
+    case GpuPass::CloughTocherPieces:
+      return true;
+  }
+  return false;
+}
+
 const std::vector<MethodInfo>& methodRegistry() {
   static const std::vector<MethodInfo> registry = {
       {Method::Flat, "flat", "", "Flat", '1', "C&W §9.2", "constant: the element's mean nodal value", false,
-       GpuPath::Triangles, false},
+       GpuPass::Triangles, false},
       {Method::Gouraud, "gouraud", "linear", "Gouraud", '2', "C&W §9.2, fig. 9.7",
        "linear on each element's triangles, as the hardware interpolates (perspective-correct or in screen "
        "space)",
-       false, GpuPath::Triangles, false},
+       false, GpuPass::Triangles, false},
       {Method::ScanlineGouraud, "scanline-gouraud", "", "Scanline Gouraud", '3', "C&W §9.2, fig. 9.7-9.8",
        "down the polygon's edges, then across each scanline, as scanline hardware did: depends on the view", true,
-       GpuPath::Polygons, false},
+       GpuPass::ScanlinePolygons, false},
       {Method::Bilinear, "bilinear", "", "Bilinear", '4', "C&W §9.2, fig. 9.9",
-       "quads in their bilinear parameter space, exact per pixel (orientation invariant)", false, GpuPath::Polygons,
-       false},
+       "quads in their bilinear parameter space, exact per pixel (orientation invariant)", false,
+       GpuPass::BilinearPolygons, false},
       {Method::Quadratic, "quadratic", "", "Quadratic", '5', "C&W §9.2",
-       "Lagrange on quadratic elements (mid-edge nodes), serendipity on quads: C0", false, GpuPath::BezierPieces,
-       false},
+       "Lagrange on quadratic elements (mid-edge nodes), serendipity on quads: C0", false,
+       GpuPass::LagrangePieces, false},
       {Method::C1Quadratic, "c1-quadratic", "", "C1 quadratic", '6', "C&W §9.2.2, fig. 9.9, 9.14b",
-       "Powell-Sabin split into quadratic Bezier pieces (Reichert): C1", false, GpuPath::BezierPieces, true},
+       "Powell-Sabin split into quadratic Bezier pieces (Reichert): C1", false, GpuPass::PowellSabinPieces, true},
       {Method::CloughTocher, "clough-tocher", "", "Clough-Tocher", '7', "C&W §9.2.2, fig. 9.14c",
        "three cubic Bezier pieces per triangle: C1, relaxed to C0 or C-1 along tagged discontinuity edges "
        "(Salesin et al. 1992)",
-       false, GpuPath::BezierPieces, true},
+       false, GpuPass::CloughTocherPieces, true},
   };
   return registry;
 }

@@ -22,12 +22,26 @@ enum class Method : int {
   CloughTocher,     // three cubic Bezier pieces per triangle, C1 with relaxations (Salesin et al.)
 };
 
-// How the GPU renderer (gl/mesh_renderer.h) draws a method.
-enum class GpuPath : int {
-  Triangles,     // the element triangles, the rasteriser interpolating (flat, Gouraud)
-  Polygons,      // per pixel from each element's polygon (scanline Gouraud, bilinear)
-  BezierPieces,  // Bezier or Lagrange pieces: exact per pixel, or tessellated
+// What the GPU renderer (gl/mesh_renderer.h) draws a method with: its pass, and for the piece
+// passes which pieces gl/method_pieces.h builds. Every function that acts on it switches over
+// all of its values, so a value added here is a compile error (-Werror=switch) wherever it is
+// not yet drawn.
+enum class GpuPass : int {
+  Triangles,           // the element triangles, the rasteriser interpolating (flat, Gouraud)
+  ScanlinePolygons,    // per pixel from each polygon: down its edges, then across the scanline
+  BilinearPolygons,    // per pixel from each quad: its bilinear parameters inverted
+  LagrangePieces,      // quadratic Lagrange triangles, serendipity quads per pixel (C0)
+  PowellSabinPieces,   // quadratic Bezier pieces of the Powell-Sabin split (C1)
+  CloughTocherPieces,  // cubic Bezier pieces of the Clough-Tocher split (C1)
 };
+
+// Drawn from Bezier or Lagrange pieces: exact per pixel, or tessellated to a flatness criterion.
+bool drawsPieces(GpuPass pass);
+// The pieces' polynomial degree (2 or 3); 0 for a pass without pieces.
+int pieceDegree(GpuPass pass);
+// Per pixel, the pieces' control nets go through the deferred resolve (a G-buffer of piece and
+// barycentric coordinates, gl/deferred_pass.h) rather than being drawn one by one.
+bool resolvesDeferred(GpuPass pass);
 
 struct MethodInfo {
   Method method;
@@ -38,9 +52,9 @@ struct MethodInfo {
   std::string section;  // where the book treats it: "C&W §9.2, fig. 9.7"
   std::string summary;  // one line: --help, the panel's tooltip
   bool viewDependent;   // the value depends on how the element lies on the screen
-  GpuPath gpu;
+  GpuPass gpu;
   bool c1;  // C1 across element edges (relaxed where the mesh tags them)
-  bool bezierPieces() const { return gpu == GpuPath::BezierPieces; }
+  bool bezierPieces() const { return drawsPieces(gpu); }
 };
 
 // The pictures drawn by casting rays per pixel rather than from the nodal values.

@@ -50,6 +50,25 @@ TEST(MethodRegistry, EntriesAreInEnumOrderWithOneNameAndKeyEach) {
   EXPECT_EQ(pictures.back(), "path-trace");
 }
 
+TEST(MethodRegistry, EachMethodNamesTheGpuPassThatDrawsIt) {
+  for (const MethodInfo& info : methodRegistry()) {
+    const int degree = pieceDegree(info.gpu);
+    EXPECT_EQ(info.bezierPieces(), degree > 0) << info.name;
+    EXPECT_TRUE(degree == 0 || degree == 2 || degree == 3) << info.name;
+    // The C1 methods are the ones the deferred resolve draws per pixel: their pieces' nets.
+    EXPECT_EQ(resolvesDeferred(info.gpu), info.c1) << info.name;
+    // A view-dependent method is drawn per pixel from its polygon, where the view is known.
+    if (info.viewDependent) {
+      EXPECT_EQ(info.gpu, GpuPass::ScanlinePolygons) << info.name;
+    }
+  }
+  EXPECT_EQ(methodInfo(Method::Flat).gpu, GpuPass::Triangles);
+  EXPECT_EQ(methodInfo(Method::Bilinear).gpu, GpuPass::BilinearPolygons);
+  EXPECT_EQ(pieceDegree(methodInfo(Method::Quadratic).gpu), 2);
+  EXPECT_EQ(pieceDegree(methodInfo(Method::C1Quadratic).gpu), 2);
+  EXPECT_EQ(pieceDegree(methodInfo(Method::CloughTocher).gpu), 3);
+}
+
 TEST(MethodRegistry, NamesAndAliasesResolveAndUnknownNamesListTheKnownOnes) {
   for (const MethodInfo& info : methodRegistry()) {
     EXPECT_EQ(methodFromName(info.name), info.method);
