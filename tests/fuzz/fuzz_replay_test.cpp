@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <sstream>
 
 namespace radview {
 namespace {
@@ -33,23 +35,37 @@ std::vector<fs::path> filesIn(const fs::path& directory) {
 
 const fs::path kSource = RADVIEW_SOURCE_DIR;
 
-// A regression input passes when it no longer crashes, aborts or reports: refused or opened.
-// Replays every input kept for a target through `body`; skips, saying so, while there is none.
-void replayRegressions(const std::string& target, bool (*body)(const uint8_t*, size_t)) {
-  const std::vector<fs::path> files = filesIn(kSource / "tests/fuzz/regressions" / target);
-  if (files.empty()) GTEST_SKIP() << "no " << target << " input has crashed the fuzz target yet";
-  for (const fs::path& file : files) {
-    SCOPED_TRACE(file.string());
-    const std::vector<uint8_t> bytes = readBytes(file);
-    body(bytes.data(), bytes.size());
+// Every input that once crashed a target, replayed through the target's body: it must no
+// longer crash, abort or report, and must take the way tests/fuzz/regressions/outcomes.txt
+// records for it (refused or opened). A kept input missing from that list fails the test, as
+// does a listed one that is gone.
+TEST(FuzzRegressions, EveryKeptInputHasItsRecordedOutcome) {
+  const fs::path folder = kSource / "tests/fuzz/regressions";
+  const std::map<std::string, bool (*)(const uint8_t*, size_t)> bodies = {
+      {"gltf", fuzz::openGltfBytes}, {"mesh", fuzz::buildMeshBytes}, {"import", fuzz::importMeshBytes}};
+  std::map<std::string, bool> recorded;  // "target/file" -> opened
+  std::ifstream list(folder / "outcomes.txt");
+  ASSERT_TRUE(list) << "no " << (folder / "outcomes.txt");
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    std::string input, outcome;
+    fields >> input >> outcome;
+    ASSERT_TRUE(outcome == "refused" || outcome == "opened") << "outcomes.txt: " << line;
+    recorded[input] = outcome == "opened";
   }
+  size_t replayed = 0;
+  for (const auto& [target, body] : bodies)
+    for (const fs::path& file : filesIn(folder / target)) {
+      const std::string input = target + "/" + file.filename().string();
+      SCOPED_TRACE(input);
+      ASSERT_EQ(recorded.count(input), 1u) << "a kept input with no outcome in outcomes.txt";
+      const std::vector<uint8_t> bytes = readBytes(file);
+      EXPECT_EQ(body(bytes.data(), bytes.size()), recorded[input]);
+      ++replayed;
+    }
+  EXPECT_EQ(replayed, recorded.size()) << "outcomes.txt lists an input that is not kept";
 }
-
-TEST(FuzzRegressions, GltfInputsThatOnceCrashedAreHandled) { replayRegressions("gltf", fuzz::openGltfBytes); }
-
-TEST(FuzzRegressions, MeshInputsThatOnceCrashedAreHandled) { replayRegressions("mesh", fuzz::buildMeshBytes); }
-
-TEST(FuzzRegressions, ImportInputsThatOnceCrashedAreHandled) { replayRegressions("import", fuzz::importMeshBytes); }
 
 // The importer target's seeds include the shared corpus; its files must take the same way
 // through the target as through loadFile.
