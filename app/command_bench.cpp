@@ -21,6 +21,7 @@
 #include "gather/path_tracer.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
+#include "gl/frame_timing.h"
 #include "gl/mesh_renderer.h"
 #include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
@@ -354,26 +355,14 @@ int runBench(const BenchOptions& options) {
       settings.tessellation = v.tessellation;
       settings.tessellationTolerance = v.tolerance / 255.0;
       settings.exposure = options.exposure;
-      // Two frames first: the pieces are built and the caches warm; then each frame is timed
-      // by its own query, read once it is done.
-      for (int k = 0; k < 2; ++k) {
-        renderer.render(camera, settings, width, height);
-        glFinish();
-      }
-      std::vector<double> ms;
-      const auto timingStart = std::chrono::steady_clock::now();
-      for (int k = 0; k < options.frames; ++k) {
-        renderer.render(camera, settings, width, height);
-        glFinish();
-        ms.push_back(renderer.lastFrameGpuMs());
-        if (options.rowSeconds > 0.0 && ms.size() >= 3 && secondsSince(timingStart) >= options.rowSeconds) break;
-      }
+      const gl::FrameTimes times =
+          gl::timeFrames(renderer, camera, settings, width, height, options.frames, options.rowSeconds);
       MeasuredRow measured;
       measured.variant = v;
       TradeoffRow& row = measured.row;
       row.method = methodName(v.method);
       row.setting = v.setting;
-      row.frameMs = median(ms);
+      row.frameMs = times.medianGpuMs();
       const auto& tess = renderer.tessellationStatistics();
       if (fixedLevel)
         trianglesPerLevelSquared[methodAndMesh] =
@@ -397,7 +386,7 @@ int runBench(const BenchOptions& options) {
       row.machBands = meanAbs(measured.values.smoothJumps);
       row.c0Kinks = meanAbs(measured.values.c0Jumps);
       std::fprintf(stderr, "%s %s: %.3g ms (median of %zu)\n", row.method.c_str(), row.setting.c_str(), row.frameMs,
-                   ms.size());
+                   times.frames.size());
       rows.push_back(std::move(measured));
     }
   }

@@ -8,7 +8,7 @@
 // method is drawn, and the gather restarts once the view has been still for a moment:
 // restarting it every frame of a drag would spend each frame on setting up a gather (its ray
 // caster, a million pixels' sums) that is cancelled before its first pass.
-#include "app/background_gather.h"
+#include "gather/background_gather.h"
 #include "app/viewer_panel.h"
 #include "gl/mesh_renderer.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // The viewer's state and its ImGui panel. ImGui lives only in app/.
-#include "app/background_gather.h"
+#include "gather/background_gather.h"
 #include "app/viewed_file.h"
 #include "core/camera.h"
 #include "edit/continuity_edit.h"

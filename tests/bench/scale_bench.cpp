@@ -1,6 +1,6 @@
 // The interpolants at scale: the Cornell box meshed finer and finer (10^4 to 10^6 elements),
 // rendered headless through EGL at 1920x1080 from the scene's camera.
-// Frame time: methods are interleaved frame by frame with Gouraud between each two, round
+// Frame time (gl/frame_timing.h, the wall time to each frame's end): methods are interleaved frame by frame with Gouraud between each two, round
 // after round (G m1 G m2 ... G, each round starting one method later), so that a shared
 // machine's slow spells fall on every method and on the Gouraud frames beside it alike; each
 // method's median is reported with its interquartile range, and its ratio to Gouraud as the
@@ -15,7 +15,9 @@
 //                             [--methods gouraud,clough-tocher]
 #include "core/camera.h"
 #include "gl/egl_context.h"
+#include "gl/frame_timing.h"
 #include "gl/mesh_renderer.h"
+#include "interp/method_registry.h"
 #include "mesh/load_file.h"
 #include "solve/direct_light.h"
 
@@ -42,12 +44,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-struct Variant {
-  const char* name;
-  Method method;
-  int tessellation;
-};
 
 double quantile(std::vector<double> v, double q) {
   std::sort(v.begin(), v.end());
@@ -158,40 +154,30 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
   const RadiosityMesh mesh = meshAndLight(file.scene, elementSize);
   const double meshSeconds = secondsSince(meshStart);
   const Camera camera = cameraFromSpec("file", mesh.bounds(), file.scene.cameras);
-  std::vector<Variant> variants;
-  // Gouraud first, always: the others are measured against it.
-  for (const Variant& v : std::vector<Variant>{{"gouraud", Method::Gouraud, 0},
-                                               {"flat", Method::Flat, 0},
-                                               {"scanline-gouraud", Method::ScanlineGouraud, 0},
-                                               {"bilinear", Method::Bilinear, 0},
-                                               {"quadratic", Method::Quadratic, 0},
-                                               {"c1-quadratic", Method::C1Quadratic, 0},
-                                               {"clough-tocher", Method::CloughTocher, 0}})
-    if (variants.empty() || only.empty() ||
-        ("," + only + ",").find("," + std::string(v.name) + ",") != std::string::npos)
-      variants.push_back(v);
+  // The registry's methods, each per pixel, Gouraud first, always: the others are measured
+  // against it.
+  std::vector<Method> variants = {Method::Gouraud};
+  for (const MethodInfo& info : methodRegistry())
+    if (info.method != Method::Gouraud &&
+        (only.empty() || ("," + only + ",").find("," + info.name + ",") != std::string::npos))
+      variants.push_back(info.method);
   // One renderer per method, so that each keeps its pieces between rounds, as a viewer would.
   std::vector<std::unique_ptr<MeshRenderer>> renderers;
   std::vector<double> firstFrame;
-  for (const Variant& v : variants) {
+  auto perPixel = [](Method method) {
+    RenderSettings settings;
+    settings.method = method;
+    return settings;
+  };
+  for (Method method : variants) {
     const auto start = Clock::now();
     renderers.push_back(std::make_unique<MeshRenderer>());
     renderers.back()->setMesh(mesh);
-    RenderSettings settings;
-    settings.method = v.method;
-    settings.tessellation = v.tessellation;
-    renderers.back()->render(camera, settings, width, height);
-    glFinish();
+    timeFrame(*renderers.back(), camera, perPixel(method), width, height);
     firstFrame.push_back(secondsSince(start));
   }
   const auto frames = interleaveWithGouraud<1>(variants.size(), rounds, [&](size_t i) {
-    RenderSettings settings;
-    settings.method = variants[i].method;
-    settings.tessellation = variants[i].tessellation;
-    const auto start = Clock::now();
-    renderers[i]->render(camera, settings, width, height);
-    glFinish();
-    return std::array<double, 1>{1e3 * secondsSince(start)};
+    return std::array<double, 1>{timeFrame(*renderers[i], camera, perPixel(variants[i]), width, height).wallMs};
   });
   std::printf("\n%zu elements (--element-size %g), meshed and lit in %.2f s; %dx%d, %d rounds\n", mesh.elements.size(),
               elementSize, meshSeconds, width, height, rounds);
@@ -200,21 +186,21 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
       "|---|---|---|---|---|\n");
   for (size_t i = 0; i < variants.size(); ++i) {
     const Series& ms = frames[i][0];
-    std::printf("| %s | %.1f | %.1f-%.1f | %s | %.2f |\n", variants[i].name, quantile(ms.samples, 0.5),
+    std::printf("| %s | %.1f | %.1f-%.1f | %s | %.2f |\n", methodName(variants[i]).c_str(), quantile(ms.samples, 0.5),
                 quantile(ms.samples, 0.25), quantile(ms.samples, 0.75), ratioOverRounds(ms).c_str(), firstFrame[i]);
   }
   std::fflush(stdout);
   if (renderRounds == 0) return;
   renderers.clear();
   const auto runs = interleaveWithGouraud<2>(variants.size(), renderRounds, [&](size_t i) {
-    const RenderRun run = renderRun(elementSize, variants[i].name, width, height);
+    const RenderRun run = renderRun(elementSize, methodName(variants[i]).c_str(), width, height);
     return std::array<double, 2>{run.peakMb, run.seconds};
   });
   std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud (range) | wall s | / Gouraud (range) |\n|---|---|---|---|---|\n",
               renderRounds);
   for (size_t i = 0; i < variants.size(); ++i) {
     const Series &peakMb = runs[i][0], &seconds = runs[i][1];
-    std::printf("| %s | %.0f | %s | %.2f | %s |\n", variants[i].name, quantile(peakMb.samples, 0.5),
+    std::printf("| %s | %.0f | %s | %.2f | %s |\n", methodName(variants[i]).c_str(), quantile(peakMb.samples, 0.5),
                 ratioOverRounds(peakMb).c_str(), quantile(seconds.samples, 0.5), ratioOverRounds(seconds).c_str());
   }
   std::fflush(stdout);

@@ -1,4 +1,4 @@
-#include "app/background_gather.h"
+#include "gather/background_gather.h"
 
 #include "gather/path_tracer.h"
 #include "gather/visible_elements.h"

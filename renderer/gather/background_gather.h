@@ -1,13 +1,12 @@
 #pragma once
-// The final gather (C&W §9.3.1, eq. 9.9; renderer/gather/final_gather.h) or the path tracer
-// (renderer/gather/path_tracer.h) run beside the viewer's frame loop, as BackgroundSolve runs the
-// solve: a worker thread adds passes of one sample per
-// pixel and publishes the mean after each, so the window shows it converging, until it has the
-// samples per pixel asked for (it then waits, keeping its mean, in case more are asked for).
+// The final gather (C&W §9.3.1, eq. 9.9; final_gather.h) or the path tracer (path_tracer.h)
+// run beside a frame loop, as BackgroundSolve (solve/background_solve.h) runs the solve: a
+// worker thread adds passes of one sample per pixel and publishes the mean after each, so a
+// window shows it converging, until it has the samples per pixel asked for (it then waits,
+// keeping its mean, in case more are asked for).
 //
 // Each gather first makes a preview at a quarter of the resolution (1/16 of the rays), so that
-// a picture appears within a fraction of a second after the view settles; a full-resolution
-// pass of a 1280x800 window takes about half a second on two cores.
+// a picture appears long before a full-resolution pass is done.
 #include "gather/final_gather.h"
 #include "gather/progressive_image.h"
 #include "mesh/radiosity_mesh.h"
