@@ -69,11 +69,11 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
 }
 
 int parseTessellation(const std::string& text) {
-  if (text == "exact") return 0;
+  if (text == "per-pixel") return 0;
   if (text == "adaptive") return gl::kAdaptiveTessellation;
   const std::optional<int64_t> level = parseInteger(text);
   if (!level || *level < 1 || *level > kMaxTessellationLevel)
-    throw Error("--tessellation '" + text + "': expected exact, adaptive or a level 1.." +
+    throw Error("--tessellation '" + text + "': expected per-pixel, adaptive or a level 1.." +
                 std::to_string(kMaxTessellationLevel));
   return int(*level);
 }

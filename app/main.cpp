@@ -90,8 +90,18 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
                    "Triangulate every element that has a T-vertex through it before drawing (Baum et al.)");
   command
       .add_option("--tessellation", d.tessellation,
-                  "quadratic, c1-quadratic, clough-tocher: exact (evaluated per pixel), adaptive (GPU-"
+                  "quadratic, c1-quadratic, clough-tocher: per-pixel (evaluated exactly at each pixel), adaptive (GPU-"
                   "tessellated until the display error is under --tolerance), or a fixed level 1..64")
+      ->transform(CLI::Validator(
+          [](std::string& value) {
+            if (value == "exact") {  // kept for older scripts
+              std::fprintf(stderr, "radview: note: --tessellation exact is the older name of per-pixel, which "
+                                   "radview uses\n");
+              value = "per-pixel";
+            }
+            return std::string();
+          },
+          ""))
       ->capture_default_str();
   command.add_option("--tolerance", d.tolerance, "Adaptive tessellation: largest display error, in 8-bit steps")
       ->check(CLI::Range(0.01, 100.0))

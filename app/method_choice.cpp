@@ -4,6 +4,7 @@
 #include "interp/method_registry.h"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace radview {
 
@@ -11,7 +12,12 @@ CLI::Validator methodChoice(const std::vector<std::string>& names) {
   return CLI::Validator(
       [names](std::string& value) -> std::string {
         for (const MethodInfo& info : methodRegistry())
-          if (!info.alias.empty() && info.alias == value) value = info.name;
+          if (!info.alias.empty() && info.alias == value) {
+            // Kept for older scripts; one name per thing is what the help and messages use.
+            std::fprintf(stderr, "radview: note: '%s' is the older name of '%s', which radview uses\n",
+                         info.alias.c_str(), info.name.c_str());
+            value = info.name;
+          }
         if (std::find(names.begin(), names.end(), value) != names.end()) return {};
         return value + " not in {" + joined(names, ",") + "}";
       },

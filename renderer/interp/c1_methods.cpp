@@ -53,7 +53,7 @@ std::unique_ptr<Interpolant> makeCloughTocher(const RadiosityMesh& mesh, const I
       });
 }
 
-std::unique_ptr<Interpolant> makePowellSabin(const RadiosityMesh& mesh, const InterpolantOptions& options) {
+std::unique_ptr<Interpolant> makeC1Quadratic(const RadiosityMesh& mesh, const InterpolantOptions& options) {
   return std::make_unique<C1Interpolant<PowellSabinPatch>>(
       mesh, options, [](const SurfaceTriangulation& surface, const CornerGradients& gradients) {
         return buildPowellSabinPatches(surface, gradients);

@@ -22,7 +22,7 @@ std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method m
     case Method::Flat:
       return makeFlat(mesh);
     case Method::Gouraud:
-      return makeLinear(mesh, options.diagonal);
+      return makeGouraud(mesh, options.diagonal);
     case Method::ScanlineGouraud:
       if (!options.view)
         throw Error(
@@ -34,7 +34,7 @@ std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method m
     case Method::Quadratic:
       return makeQuadraticLagrange(mesh);
     case Method::C1Quadratic:
-      return makePowellSabin(mesh, options);
+      return makeC1Quadratic(mesh, options);
     case Method::CloughTocher:
       return makeCloughTocher(mesh, options);
   }

@@ -13,7 +13,7 @@ namespace {
 class QuadraticLagrange : public Interpolant {
  public:
   explicit QuadraticLagrange(const RadiosityMesh& mesh)
-      : mesh_(mesh), linear_(makeLinear(mesh, QuadDiagonal::D02)), serendipity_(mesh.elements.size()) {
+      : mesh_(mesh), linear_(makeGouraud(mesh, QuadDiagonal::D02)), serendipity_(mesh.elements.size()) {
     for (size_t e = 0; e < mesh.elements.size(); ++e) serendipity_[e] = isSerendipityQuad(mesh, e);
   }
 

@@ -1,4 +1,4 @@
-// The C0 and C-1 methods that need nothing beyond the element itself: flat, linear
+// The C0 and C-1 methods that need nothing beyond the element itself: flat, Gouraud
 // (barycentric on a triangulation of the element) and bilinear quads.
 #include "geom/polygon.h"
 #include "interp/bezier_triangle.h"
@@ -24,9 +24,9 @@ class Flat : public Interpolant {
 
 // Barycentric interpolation on the triangles radview's Gouraud path draws (elementTriangles),
 // so the GPU image and this reference agree triangle for triangle.
-class Linear : public Interpolant {
+class Gouraud : public Interpolant {
  public:
-  Linear(const RadiosityMesh& mesh, QuadDiagonal diagonal) : mesh_(mesh), triangles_(mesh.elements.size()) {
+  Gouraud(const RadiosityMesh& mesh, QuadDiagonal diagonal) : mesh_(mesh), triangles_(mesh.elements.size()) {
     for (size_t e = 0; e < mesh.elements.size(); ++e)
       triangles_[e] = elementTriangles(mesh, e, diagonal == QuadDiagonal::D13 ? 1 : 0);
   }
@@ -59,7 +59,7 @@ class Linear : public Interpolant {
 class Bilinear : public Interpolant {
  public:
   explicit Bilinear(const RadiosityMesh& mesh)
-      : mesh_(mesh), linear_(mesh, QuadDiagonal::D02), convexQuad_(mesh.elements.size()) {
+      : mesh_(mesh), gouraud_(mesh, QuadDiagonal::D02), convexQuad_(mesh.elements.size()) {
     // A non-convex quad folds its bilinear map (the Jacobian changes sign inside), so the
     // inverse is not unique and Newton's method can wander off (B off by 10x the data's range
     // at its own corners on a jittered grid, extremes_test). Such quads are interpolated
@@ -70,7 +70,7 @@ class Bilinear : public Interpolant {
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
-    if (!convexQuad_[element]) return linear_.evaluate(element, x);
+    if (!convexQuad_[element]) return gouraud_.evaluate(element, x);
     std::array<Vec3, 4> p;
     std::array<Rgb, 4> f;
     for (int i = 0; i < 4; ++i) {
@@ -90,15 +90,15 @@ class Bilinear : public Interpolant {
 
  private:
   const RadiosityMesh& mesh_;
-  Linear linear_;
+  Gouraud gouraud_;
   std::vector<bool> convexQuad_;
 };
 
 }  // namespace
 
 std::unique_ptr<Interpolant> makeFlat(const RadiosityMesh& mesh) { return std::make_unique<Flat>(mesh); }
-std::unique_ptr<Interpolant> makeLinear(const RadiosityMesh& mesh, QuadDiagonal diagonal) {
-  return std::make_unique<Linear>(mesh, diagonal);
+std::unique_ptr<Interpolant> makeGouraud(const RadiosityMesh& mesh, QuadDiagonal diagonal) {
+  return std::make_unique<Gouraud>(mesh, diagonal);
 }
 std::unique_ptr<Interpolant> makeBilinear(const RadiosityMesh& mesh) { return std::make_unique<Bilinear>(mesh); }
 

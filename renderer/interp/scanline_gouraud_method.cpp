@@ -15,7 +15,7 @@ constexpr size_t kMaxScanlineCorners = 32;
 class ScanlineGouraud : public Interpolant {
  public:
   ScanlineGouraud(const RadiosityMesh& mesh, const ScreenView& view)
-      : mesh_(mesh), view_(view), gouraud_(makeLinear(mesh, QuadDiagonal::D02)) {}
+      : mesh_(mesh), view_(view), gouraud_(makeGouraud(mesh, QuadDiagonal::D02)) {}
 
   Sample evaluate(uint32_t element, const Vec3& x) const override {
     const Element& e = mesh_.elements[element];
