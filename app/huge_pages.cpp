@@ -1,7 +1,7 @@
 // Large blocks on transparent huge pages. Opening a mesh of 10^5-10^6 elements touches
 // hundreds of megabytes of new memory. On 4 KiB pages each page is a fault, and on a virtual
-// machine a fault can cost microseconds: faults were a quarter of `radview render`'s time at
-// 4.6e5 elements on the machine README's figures come from. Where the kernel backs memory with
+// machine a fault can cost microseconds, a large share of `radview render`'s time at 10^5-10^6
+// elements (tests/bench/README.md). Where the kernel backs memory with
 // huge pages only when asked (transparent_hugepage=madvise, the usual setting), blocks of
 // 4 MiB and more ask, through the one allocation function every C++ container uses. Smaller
 // blocks, and what C libraries allocate, are as before.

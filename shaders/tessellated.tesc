@@ -1,6 +1,6 @@
 #version 450 core
 // Passes the piece's control values on as a `patch out` taken from the first vertex, so
-// nothing indexes by gl_PrimitiveID (wrong on llvmpipe past ~1365 patches per draw, README,
+// nothing indexes by gl_PrimitiveID (wrong on llvmpipe past ~1365 patches per draw, renderer/gl/README.md,
 // "Platform notes"), and sets the levels the CPU chose: the same for the pieces on both
 // sides of every shared edge, so no crack opens between them.
 layout(vertices = 3) out;

@@ -3,7 +3,7 @@
 // that a file or an option controls and that decides an allocation or a loop's length, so that
 // no input, however hostile, makes radview allocate more than a 128 GiB machine has or run a
 // loop for days (what scales with an image is also checked against the memory available:
-// core/memory_budget.h). Each value is far above what real data needs (README, "Limits", lists them
+// core/memory_budget.h). Each value is far above what real data needs (core/README.md lists them
 // with the memory they imply); past one, radview refuses with an Error naming the file or the
 // option and the limit (checkLimit below), never truncates silently.
 #include <cstddef>

@@ -10,7 +10,7 @@ namespace radview::gl {
 
 namespace {
 
-// llvmpipe loses geometry past ~125k triangles per draw (README, "Platform notes"); with these
+// llvmpipe loses geometry past ~125k triangles per draw (gl/README.md, "Platform notes"); with these
 // patches (8 vec4 of patch data each) it corrupts already at ~91k (level 32 and 64 on
 // assets/discontinuities.gltf) and not at 75k. 50k keeps a margin.
 constexpr size_t kMaxTrianglesPerDraw = 50'000;

@@ -41,7 +41,7 @@ class DeferredPass {
   // what each pixel sees, (triangle + 1, lambda), 0 for the background; the evaluation then
   // reads each pixel's own texel and overwrites it, so that no visibility buffer is needed
   // beside it. Or in one pass while the draw has fewer vertices than the viewport has pixels,
-  // which reads less (README, "At scale"): each Clough-Tocher vertex reads its own corner's
+  // which reads less (tests/bench/README.md): each Clough-Tocher vertex reads its own corner's
   // values as vertex attributes, each C1 quadratic vertex its triangle's as texels.
   void draw(const glm::mat4& clipFromWorld, GLuint target);
   // The surfaces' depth alone, into the bound framebuffer (the visibility raster, its colour

@@ -4,7 +4,7 @@
 // carrying the piece's barycentric corner and the piece's control values. The control
 // values are the same at the three vertices, so the fragment shader receives them as flat
 // varyings: on llvmpipe that costs about what Gouraud costs, where fetching them from a
-// buffer by primitive id costs 2.5 times as much (README, "Platform notes"). No OpenGL here.
+// buffer by primitive id costs 2.5 times as much (gl/README.md, "Platform notes"). No OpenGL here.
 #include "interp/c1_patches.h"
 #include "mesh/topology.h"
 

@@ -1,6 +1,6 @@
 #pragma once
 // How a mesh from another tool is read (PLY, OBJ, glTF COLOR_0): what its colours mean and
-// which reading of a glTF file is wanted. README, "Meshes from other tools", states the rules.
+// which reading of a glTF file is wanted. import/README.md states the rules.
 #include "core/types.h"
 
 #include <optional>

@@ -3,7 +3,7 @@
 // .gltf with the buffer embedded), so that any glTF viewer shows the shaded result, while the
 // RADVIEW_radiosity_mesh extension keeps what glTF cannot say (polygonal and quadratic
 // elements, node identity, discontinuity edges). The format is specified in
-// README.md ("Solution file format").
+// mesh/solution_format.md.
 #include "mesh/radiosity_mesh.h"
 #include "scene/gltf_document.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // What radview's solution writer and reader agree on beyond the public interface
 // (mesh/solution_file.h): the format's version, the bufferView targets, the gradient
-// attributes' names. The format itself is specified in README.md ("Solution file format").
+// attributes' names. The format itself is specified in mesh/solution_format.md.
 #include <climits>
 #include <cstdint>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The first mesh of a scene (README, "a first radiosity-like solution"): every polygon meshed
+// The first mesh of a scene, and the mesh of a `--direct-only` preview: every polygon meshed
 // uniformly into elements of a chosen size, quads into quads and triangles into triangles.
 #include "core/limits.h"
 #include "mesh/radiosity_mesh.h"

@@ -2,7 +2,7 @@
 // An opened glTF 2.0 file (.gltf or .glb) and validated reading of its accessors.
 //
 // tinygltf parses the JSON and the GLB container but checks little else (index ranges, byte
-// ranges, minVersion, extensionsRequired; README, "Platform notes"). This class
+// ranges, minVersion, extensionsRequired; gl/README.md, "Platform notes"). This class
 // refuses what radview cannot honour at open time, and reads accessor data only through
 // checks that trust nothing in the file: every index, offset, stride and count is checked in
 // 64-bit arithmetic that cannot overflow before a byte is touched.

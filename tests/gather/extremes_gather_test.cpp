@@ -1,7 +1,7 @@
 // The final gather (C&W §9.3.1) at numerical extremes (issue 7): the closed box of
 // tests/extreme_scenes.h, its ceiling emitting, radiosities 1e-8..1e8 as B^, at every scale and
 // distance from the origin, seen from inside. Every pixel finite; every pixel covered where the
-// ray caster can resolve the box (Embree intersects in float32, see the README's limits).
+// ray caster can resolve the box (Embree intersects in float32, tests/README.md, "Numerical extremes").
 #include "gather/final_gather.h"
 
 #include "tests/extreme_scenes.h"

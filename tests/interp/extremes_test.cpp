@@ -2,7 +2,7 @@
 // short edge; caps: one vertex near the opposite edge), radiosities from 1e-8 to 1e8 in one
 // mesh, nearly collinear gradient stencils, zero-area triangles and non-convex quads. Every
 // method stays finite and its error within the documented round-off (eps * aspect of the
-// data's scale); the figures the README quotes are printed as "[ figures ]" lines.
+// data's scale); the figures renderer/interp/README.md quotes are printed as "[ figures ]" lines.
 //
 // Limits of the mesh layer met on the way (MeshTopology, renderer/mesh/topology.cpp):
 //  - nodes closer than 1e-7 of the mesh's diagonal share one position, so a needle whose
