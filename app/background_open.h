@@ -4,8 +4,8 @@
 // keeps drawing the file it shows and the panel says how long the opening has taken; the frame
 // loop then only uploads the result. At 10^6 elements reading, meshing and preparing take
 // seconds, during which the window would otherwise freeze.
-#include "app/viewed_file.h"
 #include "gl/prepared_mesh.h"
+#include "solve/viewed_file.h"
 
 #include <chrono>
 #include <mutex>

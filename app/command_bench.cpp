@@ -3,7 +3,7 @@
 #include "app/commands.h"
 #include "app/import_flags.h"
 #include "app/method_choice.h"
-#include "app/viewed_file.h"
+#include "app/solve_progress_bar.h"
 #include "bench/bench_reference.h"
 #include "bench/bench_variants.h"
 #include "bench/error_map.h"
@@ -19,6 +19,7 @@
 #include "core/strings.h"
 #include "gather/final_gather.h"
 #include "gather/path_tracer.h"
+#include "gather/traced_surfaces.h"
 #include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/frame_timing.h"
@@ -295,7 +296,8 @@ int runBench(const BenchOptions& options) {
   std::filesystem::create_directories(options.outDir, ec);
   if (ec) throw Error(options.outDir, "cannot create the output folder: " + ec.message());
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light, nullptr,
+                                           solveProgressOnTerminal(options.light));
   if (!truth)  // the reference of every row
     checkRayTracingRuns(viewed, "the " + rayTracerInfo(referenceTracer(options)).noun);
   const RadiosityMesh& mesh = viewed.mesh;

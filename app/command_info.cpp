@@ -1,7 +1,7 @@
 #include "app/commands.h"
-#include "app/viewed_file.h"
 #include "geom/polygon.h"
 #include "mesh/topology.h"
+#include "solve/viewed_file.h"
 
 #include <cstdio>
 #include <iostream>

@@ -1,5 +1,5 @@
 #include "app/commands.h"
-#include "app/viewed_file.h"
+#include "app/solve_progress_bar.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/image_difference.h"
@@ -10,6 +10,7 @@
 #include "gl/mesh_renderer.h"
 #include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
+#include "solve/viewed_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,15 +140,15 @@ int runRender(const RenderOptions& options) {
   };
   // A ray tracer that needs no solution (the path tracer) takes the surfaces alone: no solve.
   const bool solve = !tracer || rayTracerInfo(*tracer).needsSolution;
-  const ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import,
-                                           solve ? options.light : kDirectLight, checkOptions);
+  const ViewedFile viewed =
+      openForViewing(options.file, options.display.elementSize, options.import, solve ? options.light : kDirectLight,
+                     checkOptions, solveProgressOnTerminal(options.light));
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   if (tracer)
     renderRayTraced(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
   else
     renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
-  if (!viewed.lighting.empty() && solve)
-    std::printf("scene lighting: %s\n", viewed.lighting.c_str());
+  if (!viewed.lighting.empty() && solve) std::printf("scene lighting: %s\n", viewed.lighting.c_str());
   return 0;
 }
 

@@ -3,12 +3,12 @@
 // image, with no solution), written as the GL renders are (same camera, exposure and tone map),
 // so that either's --linear-out is a --reference for --view difference of any GL method.
 #include "app/commands.h"
-#include "app/viewed_file.h"
 #include "core/camera.h"
 #include "core/displayed_image.h"
 #include "core/error.h"
 #include "gather/final_gather.h"
 #include "gather/path_tracer.h"
+#include "gather/traced_surfaces.h"
 #include "interp/method_registry.h"
 
 #include <memory>
@@ -101,9 +101,9 @@ void renderRayTraced(const ViewedFile& viewed, const DisplayOptions& display, co
 
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
   const auto start = std::chrono::steady_clock::now();
-  const std::unique_ptr<ProgressiveImage> estimate =
-      gather ? finalGather(viewed, display, options, camera, width, height)
-             : pathTracer(viewed, options, camera, width, height);
+  const std::unique_ptr<ProgressiveImage> estimate = gather
+                                                         ? finalGather(viewed, display, options, camera, width, height)
+                                                         : pathTracer(viewed, options, camera, width, height);
   const bool progress = isatty(fileno(stderr));
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (estimate->samplesPerPixel() < options.spp) {

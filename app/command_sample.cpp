@@ -3,13 +3,14 @@
 // benchmarks. Points are located through a spatial index and evaluated on every core, so a
 // million of them on a million elements take seconds.
 #include "app/commands.h"
-#include "app/viewed_file.h"
+#include "app/solve_progress_bar.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "core/strings.h"
 #include "interp/interpolant.h"
 #include "interp/surface_locator.h"
+#include "solve/viewed_file.h"
 
 #include <array>
 #include <charconv>
@@ -117,7 +118,8 @@ int runSample(const SampleOptions& options) {
   interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
   interpolantOptions.useStoredGradients = !options.estimateGradients;
 
-  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light);
+  const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light, nullptr,
+                                           solveProgressOnTerminal(options.light));
   if (!viewed.lighting.empty())
     std::fprintf(stderr, "radview: %s: scene lighting: %s\n", options.file.c_str(), viewed.lighting.c_str());
   const RadiosityMesh& mesh = viewed.mesh;

@@ -1,8 +1,11 @@
 #include "app/solve_progress_bar.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 
 namespace radview {
 
@@ -37,6 +40,14 @@ void ProgressBar::update(const SolveProgress& p, bool force) {
 
 void ProgressBar::finish() {
   if (drawn_) std::fprintf(stderr, "\n");
+}
+
+SolveProgressCallback solveProgressOnTerminal(const SceneLightOptions& light) {
+  auto bar = std::make_shared<ProgressBar>(isatty(fileno(stderr)) != 0, light.solve.solver.stopUnshotFraction);
+  return [bar](const SolveProgress& p, bool finished) {
+    bar->update(p, finished);
+    if (finished) bar->finish();
+  };
 }
 
 }  // namespace radview

@@ -2,6 +2,7 @@
 // The solve's progress on a terminal: `radview solve`, and the solve that render, bench, sample
 // and export run when they open a scene.
 #include "solve/progressive_refinement.h"
+#include "solve/viewed_file.h"
 
 #include <chrono>
 #include <string>
@@ -26,5 +27,9 @@ class ProgressBar {
   bool drawn_ = false;
   std::chrono::steady_clock::time_point last_{};
 };
+
+// The bar for the solve of a scene that openForViewing runs with `light`, on standard error when
+// that is a terminal (nothing otherwise).
+SolveProgressCallback solveProgressOnTerminal(const SceneLightOptions& light);
 
 }  // namespace radview

@@ -2,6 +2,7 @@
 #include "app/background_pieces.h"
 #include "app/commands.h"
 #include "app/examples.h"
+#include "app/solve_progress_bar.h"
 #include "app/viewer_gather.h"
 #include "app/viewer_input.h"
 #include "app/viewer_panel.h"
@@ -9,6 +10,7 @@
 #include "core/image_difference.h"
 #include "core/memory_budget.h"
 #include "edit/edge_picker.h"
+#include "gather/traced_surfaces.h"
 #include "interp/method_registry.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
@@ -78,15 +80,15 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
   const bool needsSolution = !tracer || rayTracerInfo(*tracer).needsSolution;
   const bool solve = !viewed.file.isSolution && !options.light.directOnly && needsSolution;
-  const ViewedFile lit =
-      solve ? openForViewing(options.file, options.display.elementSize, options.import, options.light) : ViewedFile{};
+  const ViewedFile lit = solve ? openForViewing(options.file, options.display.elementSize, options.import,
+                                                options.light, nullptr, solveProgressOnTerminal(options.light))
+                               : ViewedFile{};
   const ViewedFile& shown = solve ? lit : viewed;
   if (tracer)
     renderRayTraced(shown, options.display, options.gather, width, height, out, "");
   else
     renderHeadless(shown, options.display, width, height, out);
-  if (!shown.lighting.empty() && needsSolution)
-    std::printf("scene lighting: %s\n", shown.lighting.c_str());
+  if (!shown.lighting.empty() && needsSolution) std::printf("scene lighting: %s\n", shown.lighting.c_str());
   return 0;
 }
 
@@ -269,8 +271,8 @@ struct ViewerWork {
       const Camera framed = framedFor(state.camera, double(width) / height);
       // The final gather waits for a scene's solve to publish a solution: over direct light alone
       // it would show light the scene does not have.
-      const bool awaitingSolution =
-          state.gather.on && !state.gather.pathTrace && state.viewed.directLightOnly && (state.solving || state.solveRequested);
+      const bool awaitingSolution = state.gather.on && !state.gather.pathTrace && state.viewed.directLightOnly &&
+                                    (state.solving || state.solveRequested);
       if (state.gather.on && !awaitingSolution &&
           (!state.viewed.file.gatherRefusal.empty() || (!state.gather.pathTrace && state.viewed.directLightOnly))) {
         state.gather.on = false;

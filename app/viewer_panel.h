@@ -1,11 +1,11 @@
 #pragma once
 // The viewer's state and its ImGui panel. ImGui lives only in app/.
-#include "gather/background_gather.h"
-#include "app/viewed_file.h"
 #include "core/camera.h"
 #include "edit/continuity_edit.h"
+#include "gather/background_gather.h"
 #include "gl/mesh_renderer.h"
 #include "interp/interpolant.h"
+#include "solve/viewed_file.h"
 
 #include <cstdint>
 #include <optional>
@@ -19,7 +19,7 @@ namespace radview {
 // the view moves): what the panel and the command line set, and what the gather reports.
 struct GatherControls {
   bool on = false;
-  bool pathTrace = false;  // on: the path tracer's true image instead of the final gather
+  bool pathTrace = false;                // on: the path tracer's true image instead of the final gather
   Method interpolant = Method::Gouraud;  // B^ under the integral of eq. 9.9
   int emitterSamples = 1;                // shadow rays per pixel per pass
   uint64_t seed = 1;
@@ -73,7 +73,6 @@ void rotateView45(ViewerState& state);
 // Edit mode on also shows the element and discontinuity edges, which it is about.
 void setContinuityEditing(ViewerState& state, bool on);
 void resetCamera(ViewerState& state);
-
 
 // The panel's width before scaling to the monitor's content scale.
 constexpr float kPanelWidth = 400.0f;

@@ -1,12 +1,8 @@
-#include "app/viewed_file.h"
+#include "solve/viewed_file.h"
 
-#include "app/solve_progress_bar.h"
 #include "core/error.h"
-#include "gather/visible_elements.h"
 #include "mesh/topology.h"
 #include "solve/direct_light.h"
-
-#include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
@@ -16,18 +12,18 @@ namespace radview {
 
 namespace {
 
-// The scene solved with `light`'s settings, its progress on a terminal.
-RadiosityMesh solvedScene(const Scene& scene, double elementSize, const SolveSettings& given, std::string& lighting,
-                          double& patchSize) {
+// The scene solved with `given`'s settings; `lighting` says how, in words.
+RadiosityMesh solvedScene(const Scene& scene, double elementSize, const SolveSettings& given,
+                          const SolveProgressCallback& onProgress, std::string& lighting, double& patchSize) {
   SolveSettings settings = given;
   if (elementSize > 0.0) settings.patchSize = elementSize;
   settings = resolvedFor(scene, settings);
-  ProgressBar bar(isatty(fileno(stderr)) != 0, settings.solver.stopUnshotFraction);
   SolveSummary summary;
   const auto start = std::chrono::steady_clock::now();
-  RadiosityMesh mesh = solveRadiosity(scene, settings, summary, [&](const SolveProgress& p) { bar.update(p); });
-  bar.update(summary.progress, true);
-  bar.finish();
+  RadiosityMesh mesh = solveRadiosity(scene, settings, summary, [&](const SolveProgress& p) {
+    if (onProgress) onProgress(p, false);
+  });
+  if (onProgress) onProgress(summary.progress, true);
   const SolveProgress& p = summary.progress;
   char text[256];
   std::snprintf(text, sizeof text, "radiosity solve%s: %zu shots, %.2f%% unshot, %zu elements, %.1f s",
@@ -41,7 +37,8 @@ RadiosityMesh solvedScene(const Scene& scene, double elementSize, const SolveSet
 }  // namespace
 
 ViewedFile openForViewing(const std::string& path, double elementSize, const ImportOptions& import,
-                          const SceneLightOptions& light, const std::function<void(const LoadedFile&)>& checkLoaded) {
+                          const SceneLightOptions& light, const std::function<void(const LoadedFile&)>& checkLoaded,
+                          const SolveProgressCallback& onProgress) {
   ViewedFile viewed;
   viewed.file = loadFile(path, import);
   if (checkLoaded) checkLoaded(viewed.file);
@@ -57,7 +54,8 @@ ViewedFile openForViewing(const std::string& path, double elementSize, const Imp
       viewed.lighting = kDirectOnlyLabel;
       viewed.directLightOnly = true;
     } else {
-      viewed.mesh = solvedScene(viewed.file.scene, elementSize, light.solve, viewed.lighting, viewed.elementSize);
+      viewed.mesh =
+          solvedScene(viewed.file.scene, elementSize, light.solve, onProgress, viewed.lighting, viewed.elementSize);
     }
     viewed.tVertexCount = MeshTopology(viewed.mesh).tVertices().size();
   } catch (const Error& e) {
@@ -65,20 +63,6 @@ ViewedFile openForViewing(const std::string& path, double elementSize, const Imp
     throw what.rfind(path + ": ", 0) == 0 ? e : Error(path, what);
   }
   return viewed;
-}
-
-Scene tracedSurfaces(const ViewedFile& viewed) {
-  return viewed.file.scene.polygons.empty() ? elementScene(viewed.mesh) : viewed.file.scene;
-}
-
-void checkRayTracingRuns(const ViewedFile& viewed, const std::string& method) {
-  if (!viewed.file.gatherRefusal.empty())
-    throw Error(viewed.file.path, method + " cannot run: " + viewed.file.gatherRefusal +
-                                      "; the interpolants work on it (--method gouraud, clough-tocher, ...)");
-  if (viewed.directLightOnly && method == "the final gather")
-    throw Error(viewed.file.path, "the final gather cannot run with --direct-only: eq. 9.9 would gather from direct "
-                                  "light alone, which the scene does not have (leave --direct-only out to solve the "
-                                  "scene first, or use --method path-trace, which needs no solution)");
 }
 
 }  // namespace radview
