@@ -20,12 +20,13 @@
 #include "gather/final_gather.h"
 #include "gather/path_tracer.h"
 #include "gather/traced_surfaces.h"
-#include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/frame_timing.h"
 #include "gl/mesh_renderer.h"
 #include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
+#include "scene/camera_presets.h"
+#include "trace/visible_elements.h"
 
 #include <algorithm>
 #include <chrono>

@@ -10,6 +10,7 @@
 #include "gl/mesh_renderer.h"
 #include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
+#include "scene/camera_presets.h"
 #include "solve/viewed_file.h"
 
 #include <algorithm>

@@ -10,6 +10,7 @@
 #include "gather/path_tracer.h"
 #include "gather/traced_surfaces.h"
 #include "interp/method_registry.h"
+#include "scene/camera_presets.h"
 
 #include <memory>
 

@@ -10,6 +10,7 @@
 #include "core/strings.h"
 #include "interp/interpolant.h"
 #include "interp/surface_locator.h"
+#include "scene/camera_presets.h"
 #include "solve/viewed_file.h"
 
 #include <array>

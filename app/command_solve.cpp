@@ -9,12 +9,13 @@
 #include "core/error.h"
 #include "core/limits.h"
 #include "core/parallel_for.h"
+#include "discontinuity/discontinuity_mesher.h"
+#include "import/load_file.h"
 #include "interp/t_vertex_repair.h"
-#include "mesh/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/discontinuity_mesher.h"
+#include "scene/camera_presets.h"
 #include "solve/radiosity_solve.h"
 
 #include <unistd.h>
@@ -149,8 +150,8 @@ int runSolve(const SolveOptions& options) {
     std::snprintf(interpolationError, sizeof interpolationError, ", interpolation error %g %%",
                   100.0 * settings.subdivision.relativeError);
   std::printf("subdivision: %d rounds, %zu elements split (tolerance %g steps%s, min size %g, max %zu elements%s)\n",
-              summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance,
-              interpolationError, settings.subdivision.minElementSize, settings.subdivision.maxElements,
+              summary.subdivisionRounds, summary.elementsSplit, settings.subdivision.tolerance, interpolationError,
+              settings.subdivision.minElementSize, settings.subdivision.maxElements,
               settings.subdivision.balance ? ", 2:1 balanced" : "");
   if (summary.views > 0)
     std::printf("meshed for %zu view%s at %s (elements no view sees are not split)\n", summary.views,

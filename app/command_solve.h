@@ -1,7 +1,7 @@
 #pragma once
 // radview solve: a scene in, a radiosity solution file out (progressive refinement with
 // adaptive subdivision, renderer/solve/radiosity_solve.h).
-#include "solve/discontinuity_mesher.h"
+#include "discontinuity/discontinuity_mesher.h"
 #include "solve/radiosity_solve.h"
 
 #include <CLI/CLI.hpp>

@@ -2,11 +2,11 @@
 // Synthesis, §9.2-9.3). This file is the command line; each subcommand lives in its own file.
 #include "app/command_bench.h"
 #include "app/command_solve.h"
-#include "app/scene_light.h"
 #include "app/commands.h"
 #include "app/examples.h"
 #include "app/import_flags.h"
 #include "app/method_choice.h"
+#include "app/scene_light.h"
 #include "app/viewer_keys.h"
 #include "app/viewer_panel.h"
 #include "core/camera.h"
@@ -14,6 +14,7 @@
 #include "core/strings.h"
 #include "gl/mesh_renderer.h"
 #include "interp/interpolant.h"
+#include "scene/camera_presets.h"
 
 #include <CLI/CLI.hpp>
 
@@ -33,7 +34,8 @@ constexpr const char* kFileHelp =
 // --view's help: every view's name and what it shows (gl/display_views.h).
 std::string displayViewHelp() {
   std::vector<std::string> views;
-  for (const gl::DisplayViewInfo& info : gl::displayViewRegistry()) views.push_back(info.name + " (" + info.summary + ")");
+  for (const gl::DisplayViewInfo& info : gl::displayViewRegistry())
+    views.push_back(info.name + " (" + info.summary + ")");
   return "What the display shows: " + joined(views) + "; difference needs --compare-with or --reference";
 }
 
@@ -43,9 +45,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
   for (const RayTracerInfo& info : rayTracerRegistry())
     if (std::find(methods.begin(), methods.end(), info.name) != methods.end())
       help += "\n  " + info.name + ": " + info.summary + " (" + info.section + ")";
-  command.add_option("--method", d.method, help)
-      ->check(methodChoice(methods))
-      ->capture_default_str();
+  command.add_option("--method", d.method, help)->check(methodChoice(methods))->capture_default_str();
   command.add_flag("--screen-space", d.screenSpace,
                    "Gouraud linear in screen space, as scanline hardware did, not perspective-correct");
   command.add_option("--exposure", d.exposure, "Exposure in stops: B is scaled by 2^X before display")
@@ -56,8 +56,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
                          ") or ex,ey,ez/tx,ty,tz[/ux,uy,uz]; "
                          "default: the file's camera, else front");
   command.add_flag("--edges", d.edges, "Overlay element edges");
-  command
-      .add_option("--view", d.view, displayViewHelp())
+  command.add_option("--view", d.view, displayViewHelp())
       ->check(CLI::IsMember(gl::displayViewNames()))
       ->capture_default_str();
   command
@@ -95,8 +94,9 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
       ->transform(CLI::Validator(
           [](std::string& value) {
             if (value == "exact") {  // kept for older scripts
-              std::fprintf(stderr, "radview: note: --tessellation exact is the older name of per-pixel, which "
-                                   "radview uses\n");
+              std::fprintf(stderr,
+                           "radview: note: --tessellation exact is the older name of per-pixel, which "
+                           "radview uses\n");
               value = "per-pixel";
             }
             return std::string();

@@ -14,6 +14,7 @@
 #include "interp/method_registry.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
+#include "scene/camera_presets.h"
 #include "solve/background_solve.h"
 
 #include <epoxy/gl.h>

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "core/parallel_for.h"
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include <algorithm>
 

@@ -1,13 +1,8 @@
 #pragma once
-// A pinhole camera and the ways a user names one: a preset or "eye/target/up".
+// A pinhole camera, framed for a view and moved by the mouse.
 #include "core/types.h"
 
-#include <string>
-#include <vector>
-
 namespace radview {
-
-struct SceneCamera;
 
 struct Camera {
   Vec3 eye{0.0, 0.0, 1.0};
@@ -31,14 +26,6 @@ Camera framedFor(const Camera& camera, double aspect);
 // Sets zNear/zFar to enclose `bounds` as seen from the camera, with a near plane no closer
 // than 1e-4 of the far one (depth precision).
 void fitClipPlanes(Camera& camera, const Bounds& bounds);
-
-// Names accepted by cameraFromSpec, for --help: "file" (the file's first camera), "front",
-// "back", "left", "right", "top", "bottom", "iso".
-std::vector<std::string> cameraPresetNames();
-
-// The camera a user asked for: a preset name, or "ex,ey,ez/tx,ty,tz[/ux,uy,uz]". An empty
-// spec means "file" when the file has a camera, else "front". Throws Error for a bad spec.
-Camera cameraFromSpec(const std::string& spec, const Bounds& bounds, const std::vector<SceneCamera>& fileCameras);
 
 // Orbit / pan / zoom about the target, and roll about the view axis (fig. 9.8 rotates the
 // view in 45-degree steps).

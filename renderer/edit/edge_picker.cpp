@@ -1,7 +1,7 @@
 #include "edit/edge_picker.h"
 
-#include "gather/camera_rays.h"
-#include "gather/visible_elements.h"
+#include "trace/camera_rays.h"
+#include "trace/visible_elements.h"
 
 #include <algorithm>
 #include <cmath>

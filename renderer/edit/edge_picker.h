@@ -4,7 +4,7 @@
 // within a few pixels of the point.
 #include "core/camera.h"
 #include "edit/continuity_edit.h"
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include <memory>
 #include <optional>

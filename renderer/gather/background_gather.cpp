@@ -1,7 +1,7 @@
 #include "gather/background_gather.h"
 
 #include "gather/path_tracer.h"
-#include "gather/visible_elements.h"
+#include "trace/visible_elements.h"
 
 #include <algorithm>
 #include <chrono>
@@ -151,7 +151,8 @@ void BackgroundGather::run(RadiosityMesh mesh, GatherSettings settings, std::opt
     }
   } catch (const std::exception& e) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!cancelled_) progress_.error = std::string(pathTraced ? "path tracer" : "final gather") + " failed: " + e.what();
+    if (!cancelled_)
+      progress_.error = std::string(pathTraced ? "path tracer" : "final gather") + " failed: " + e.what();
   }
   std::lock_guard<std::mutex> lock(mutex_);
   workerDone_ = true;

@@ -18,7 +18,7 @@
 #include "gather/emitter_sampler.h"
 #include "gather/occluding_polygons.h"
 #include "mesh/radiosity_mesh.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <cstdint>
 #include <unordered_map>
@@ -59,7 +59,7 @@ class SceneControl {
   // h's integral over one visible piece of a hull: the piece cut along the grid's lines.
   Rgb pieceIntegral(const HullRadiosity& hull, const Vec3& x, const Vec3& n, const std::vector<Vec3>& piece) const;
   OccludingPolygons hulls_;
-  std::vector<HullRadiosity> radiosities_;  // per hull
+  std::vector<HullRadiosity> radiosities_;                // per hull
   std::unordered_map<uint32_t, uint32_t> hullOfEmitter_;  // emitter element -> its hull, if convex
   // The other emitters, with no occlusion: Lambert's sum over each group's outline.
   struct UnoccludedEmitter {

@@ -4,7 +4,7 @@
 #include "core/limits.h"
 #include "core/parallel_for.h"
 #include "gather/hemisphere_sampling.h"
-#include "gather/visible_elements.h"
+#include "trace/visible_elements.h"
 
 #include <string>
 
@@ -81,8 +81,7 @@ Rgb FinalGather::directResidual(const GatherPoint& point, const Vec3& n, const G
     ++rays;
     const double seen = caster_->occluded({x, n, s.position, s.normal}) ? 0.0 : 1.0;
     const double controlSeen = point.fixed && control_.emitterSeen(x, s, point.facing) ? 1.0 : 0.0;
-    if (seen != controlSeen)
-      sum += s.E * ((seen - controlSeen) * cosP * cosE / (kPi * r2 * s.pdfArea * chance));
+    if (seen != controlSeen) sum += s.E * ((seen - controlSeen) * cosP * cosE / (kPi * r2 * s.pdfArea * chance));
   }
   return sum / double(settings_.emitterSamples);
 }
@@ -99,8 +98,7 @@ Rgb FinalGather::indirectResidual(const GatherPoint& point, const Vec3& n, const
     ++rays;
     // A plain point's one direction is the pass's own point, as its other coordinates are.
     const int word = point.fixed ? sequence_.dimensions() + 2 * j : kIndirectDimension;
-    const Vec3 direction =
-        cosineWeightedDirection(n, u(word, kIndirectDimension), u(word + 1, kIndirectDimension + 1));
+    const Vec3 direction = cosineWeightedDirection(n, u(word, kIndirectDimension), u(word + 1, kIndirectDimension + 1));
     if (point.fixed) sum -= control_.along(x, direction, point.facing);
     const std::optional<RayHit> hit = caster_->closestHit({x, direction, n});
     if (!hit || !hit->front) continue;
@@ -141,7 +139,7 @@ PixelSample FinalGather::sample(int x, int y, int pass, const std::vector<uint32
     result.B = interpolant_->evaluate(element, seen->position).B;
     return result;
   }
-  const GatherPoint at = !settings_.pixelCentres  ? GatherPoint{element, seen->position}
+  const GatherPoint at = !settings_.pixelCentres ? GatherPoint{element, seen->position}
                          : centrePoints_.empty() ? gatherPoint(element, seen->position)
                                                  : centrePoints_[pixel];
   result.B = radiosityAt(at, u, result.rays);

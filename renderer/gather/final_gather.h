@@ -41,14 +41,14 @@
 // on which thread takes them, so the image is bit-identical for any thread count.
 #include "core/camera.h"
 #include "core/image.h"
-#include "gather/camera_rays.h"
 #include "gather/control_variates.h"
 #include "gather/emitter_sampler.h"
 #include "gather/gather_sequence.h"
 #include "gather/progressive_image.h"
 #include "interp/interpolant.h"
 #include "mesh/radiosity_mesh.h"
-#include "solve/ray_caster.h"
+#include "trace/camera_rays.h"
+#include "trace/ray_caster.h"
 
 #include <cstdint>
 #include <memory>

@@ -8,7 +8,7 @@
 // estimate stays unbiased, and neighbouring pixels' errors are unrelated. For an integrand
 // that is smooth apart from a few edges (a shadow, a silhouette) the error then falls faster
 // than the 1/sqrt(spp) of independent samples.
-#include "solve/patch_sampler.h"
+#include "trace/patch_sampler.h"
 
 #include <cstdint>
 #include <vector>

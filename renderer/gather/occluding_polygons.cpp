@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "geom/polygon.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -155,7 +155,8 @@ size_t OccludingPolygons::visiblePieces(size_t i, const Vec3& x, const Vec3& n, 
       Fragment& fragment = fragments[f];
       // Most fragments lie wholly outside one side of the cone: nothing to clip.
       const bool apart = std::any_of(sides, sides + sideCount, [&](const Vec3& side) {
-        return std::all_of(fragment.begin(), fragment.end(), [&](const Vec3& v) { return glm::dot(side, v - x) <= 0.0; });
+        return std::all_of(fragment.begin(), fragment.end(),
+                           [&](const Vec3& v) { return glm::dot(side, v - x) <= 0.0; });
       });
       bool inFront = false;
       if (!apart) {

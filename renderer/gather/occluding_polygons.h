@@ -6,7 +6,7 @@
 //  - the form factor from x to the part of each polygon that x sees (visibleFormFactors), in
 //    closed form: the polygon, clipped to x's horizon, less the cone from x through every
 //    polygon in front of it (clipping, as Weiler and Atherton's hidden-surface removal does in
-//    the image plane), and Lambert's formula (solve/form_factor.h) over the pieces left.
+//    the image plane), and Lambert's formula (trace/form_factor.h) over the pieces left.
 // So a function that is constant on what x sees of each polygon integrates over the cosine-
 // weighted hemisphere to the sum of those constants times those form factors.
 //
@@ -57,7 +57,7 @@ class OccludingPolygons {
     std::vector<Vec3> corners;
     std::vector<Vec3> edgeInwards;  // per edge corners[k] -> corners[k + 1]: in the plane, inwards
     Vec3 normal, centre;
-    double size;         // bounding diagonal
+    double size;  // bounding diagonal
     // The polygons that can hide this one: not crossing it, not coplanar, and with some of
     // this one behind their plane.
     uint64_t hiddenBy;

@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "gather/hemisphere_sampling.h"
-#include "solve/patch_sampler.h"
+#include "trace/patch_sampler.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,7 +77,8 @@ Rgb PathTracer::radiosityAt(const Material& material, const Vec3& normal, const 
   for (int surface = 0; surface < kMaxSurfaces && maxChannel(beta) > 0.0; ++surface) {
     // Next-event estimation: a point on the emitters, seen or not.
     if (!emitters_.empty()) {
-      const EmitterSample s = emitters_.sample(u(surface, kEmitter), u(surface, kEmitter + 1), u(surface, kEmitter + 2));
+      const EmitterSample s =
+          emitters_.sample(u(surface, kEmitter), u(surface, kEmitter + 1), u(surface, kEmitter + 2));
       const Vec3 d = s.position - p;
       const double r2 = glm::dot(d, d);
       const Vec3 w = r2 > 0.0 ? d / std::sqrt(r2) : Vec3(0.0);

@@ -35,12 +35,12 @@
 // counter-based stream keyed by the seed, the pixel and the pass. Every pixel's path depends on
 // nothing else, so the image is the same for any thread count.
 #include "core/camera.h"
-#include "gather/camera_rays.h"
 #include "gather/emitter_sampler.h"
 #include "gather/gather_sequence.h"
 #include "gather/progressive_image.h"
 #include "scene/scene.h"
-#include "solve/ray_caster.h"
+#include "trace/camera_rays.h"
+#include "trace/ray_caster.h"
 
 #include <cstdint>
 #include <memory>

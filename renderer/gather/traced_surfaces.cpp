@@ -1,7 +1,7 @@
 #include "gather/traced_surfaces.h"
 
 #include "core/error.h"
-#include "gather/visible_elements.h"
+#include "trace/visible_elements.h"
 
 namespace radview {
 

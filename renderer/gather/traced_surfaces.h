@@ -8,7 +8,7 @@
 namespace radview {
 
 // The surfaces the path tracer traces: a scene's polygons as the file gives them, or the mesh's
-// elements (gather/visible_elements.h's elementScene) for a solution or another tool's mesh.
+// elements (trace/visible_elements.h's elementScene) for a solution or another tool's mesh.
 Scene tracedSurfaces(const ViewedFile& viewed);
 
 // Both integrate rho times the light around each point seen and add the emitters' E: a mesh

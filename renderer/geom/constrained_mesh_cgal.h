@@ -1,7 +1,7 @@
 #pragma once
 // The seam to CGAL's 2D mesh generator (Mesh_2): a polygon with constraint segments inside it,
 // as a constrained Delaunay triangulation refined to a maximum edge length. The discontinuity
-// mesher (solve/discontinuity_mesher.h) builds on it; this is a radview_cgal translation unit.
+// mesher (discontinuity/discontinuity_mesher.h) builds on it; this is a radview_cgal translation unit.
 #include "core/types.h"
 
 #include <array>
@@ -12,7 +12,7 @@ namespace radview {
 
 // A planar straight-line graph: a simple boundary ring and segments inside it, all between
 // indexed points. Segments should touch each other and the boundary only at shared points
-// (solve/discontinuity_segments.h arranges that); a residual crossing is still split at a
+// (discontinuity/discontinuity_segments.h arranges that); a residual crossing is still split at a
 // constructed point (CGAL's Exact_predicates_tag), never refused.
 struct PlanarGraph {
   std::vector<Vec2> points;

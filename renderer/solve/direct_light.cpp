@@ -3,7 +3,7 @@
 #include "core/parallel_for.h"
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <algorithm>
 

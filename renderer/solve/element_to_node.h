@@ -3,8 +3,8 @@
 // Haines 1989): the form factor from a point (a mesh node) to a shooting patch, with the
 // patch's visibility from the point estimated by rays to samples of its area.
 #include "core/types.h"
-#include "solve/patch_sampler.h"
-#include "solve/ray_caster.h"
+#include "trace/patch_sampler.h"
+#include "trace/ray_caster.h"
 
 #include <cstddef>
 #include <optional>

@@ -7,13 +7,13 @@
 // A patch shoots the radiosity of each of its current elements, so that once its elements are
 // subdivided it shoots at their resolution: a patch half in a shadow, or half under a block
 // standing on it, shoots its lit part's light from its lit part only.
+#include "discontinuity/discontinuity_events.h"
 #include "geom/polygon.h"
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 #include "solve/adaptive_subdivision.h"
-#include "solve/discontinuity_events.h"
-#include "solve/patch_sampler.h"
-#include "solve/ray_caster.h"
+#include "trace/patch_sampler.h"
+#include "trace/ray_caster.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,7 +1,7 @@
 #include "solve/radiosity_solve.h"
 
+#include "discontinuity/contact_cut.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/contact_cut.h"
 
 #include <cmath>
 

@@ -5,10 +5,10 @@
 // until a round splits nothing with the criterion met.
 // RadiositySolve takes it one step at a time, so that `radview solve` and the viewer's
 // background solve (solve/background_solve.h) run the same steps; solveRadiosity runs them all.
+#include "discontinuity/discontinuity_mesher.h"
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 #include "solve/adaptive_subdivision.h"
-#include "solve/discontinuity_mesher.h"
 #include "solve/progressive_refinement.h"
 
 #include <functional>

@@ -1,9 +1,9 @@
 #include "solve/view_importance.h"
 
 #include "core/parallel_for.h"
-#include "gather/camera_rays.h"
-#include "gather/visible_elements.h"
-#include "solve/ray_caster.h"
+#include "trace/camera_rays.h"
+#include "trace/ray_caster.h"
+#include "trace/visible_elements.h"
 
 #include <sstream>
 

@@ -2,7 +2,7 @@
 // A file as the viewer and the commands show it: a solution file as it is, or a scene solved as
 // `radview solve` solves it, or (a preview, --direct-only) meshed uniformly and lit by its
 // emitters' unoccluded direct light.
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/radiosity_mesh.h"
 #include "solve/radiosity_solve.h"
 
@@ -42,7 +42,7 @@ struct ViewedFile {
 using SolveProgressCallback = std::function<void(const SolveProgress&, bool finished)>;
 
 // elementSize <= 0 picks the default (defaultElementSize(scene), or the solve's patch size);
-// `import` says how another tool's mesh is read (mesh/load_file.h); `light` how a scene is lit.
+// `import` says how another tool's mesh is read (import/load_file.h); `light` how a scene is lit.
 // `checkLoaded`, if given, sees the file once it is read and before a scene is meshed or solved:
 // options that depend on the file (a camera) are refused there, not after a solve. Every error
 // names the file. Throws Error.

@@ -5,7 +5,8 @@
 #include "core/camera.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
+#include "scene/camera_presets.h"
 #include "solve/direct_light.h"
 
 #include <benchmark/benchmark.h>

@@ -2,9 +2,9 @@
 // evaluated there agree with a closed form, and only the nodes a view depends on are gathered.
 #include "bench/nodal_reference.h"
 
-#include "gather/visible_elements.h"
 #include "mesh/uniform_mesher.h"
 #include "tests/closed_form_scenes.h"
+#include "trace/visible_elements.h"
 
 #include <gtest/gtest.h>
 

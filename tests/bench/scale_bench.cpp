@@ -1,7 +1,7 @@
 // The interpolants at scale: the Cornell box meshed finer and finer (10^4 to 10^6 elements),
 // rendered headless through EGL at 1920x1080 from the scene's camera.
-// Frame time (gl/frame_timing.h, the wall time to each frame's end): methods are interleaved frame by frame with Gouraud between each two, round
-// after round (G m1 G m2 ... G, each round starting one method later), so that a shared
+// Frame time (gl/frame_timing.h, the wall time to each frame's end): methods are interleaved frame by frame with
+// Gouraud between each two, round after round (G m1 G m2 ... G, each round starting one method later), so that a shared
 // machine's slow spells fall on every method and on the Gouraud frames beside it alike; each
 // method's median is reported with its interquartile range, and its ratio to Gouraud as the
 // median over rounds of its time over the mean of the two Gouraud frames beside it. Seconds to
@@ -17,8 +17,9 @@
 #include "gl/egl_context.h"
 #include "gl/frame_timing.h"
 #include "gl/mesh_renderer.h"
+#include "import/load_file.h"
 #include "interp/method_registry.h"
-#include "mesh/load_file.h"
+#include "scene/camera_presets.h"
 #include "solve/direct_light.h"
 
 #include <fcntl.h>
@@ -196,8 +197,10 @@ void measure(const LoadedFile& file, double elementSize, int rounds, int renderR
     const RenderRun run = renderRun(elementSize, methodName(variants[i]).c_str(), width, height);
     return std::array<double, 2>{run.peakMb, run.seconds};
   });
-  std::printf("\n`radview render`, %d rounds\n| method | peak MB | / Gouraud (range) | wall s | / Gouraud (range) |\n|---|---|---|---|---|\n",
-              renderRounds);
+  std::printf(
+      "\n`radview render`, %d rounds\n| method | peak MB | / Gouraud (range) | wall s | / Gouraud (range) "
+      "|\n|---|---|---|---|---|\n",
+      renderRounds);
   for (size_t i = 0; i < variants.size(); ++i) {
     const Series &peakMb = runs[i][0], &seconds = runs[i][1];
     std::printf("| %s | %.0f | %s | %.2f | %s |\n", methodName(variants[i]).c_str(), quantile(peakMb.samples, 0.5),

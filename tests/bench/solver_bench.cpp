@@ -10,7 +10,7 @@
 //   build/radview_solver_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 #include "core/parallel_for.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/uniform_mesher.h"
 #include "solve/element_to_node.h"
 #include "solve/radiosity_solve.h"

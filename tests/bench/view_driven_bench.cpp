@@ -14,12 +14,13 @@
 #include "bench/image_error.h"
 #include "core/camera.h"
 #include "gather/final_gather.h"
-#include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/uniform_mesher.h"
+#include "scene/camera_presets.h"
 #include "solve/radiosity_solve.h"
+#include "trace/visible_elements.h"
 
 #include <chrono>
 #include <cmath>

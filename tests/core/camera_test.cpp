@@ -1,5 +1,6 @@
 #include "core/camera.h"
 #include "core/error.h"
+#include "scene/camera_presets.h"
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>

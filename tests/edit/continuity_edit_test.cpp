@@ -4,8 +4,8 @@
 #include "edit/continuity_edit.h"
 
 #include "core/error.h"
+#include "import/load_file.h"
 #include "interp/interpolant.h"
-#include "mesh/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "tests/test_print.h"

@@ -2,13 +2,14 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "import/load_file.h"
 #include "import/ply_file.h"
 #include "import/ply_mesh.h"
 #include "interp/interpolant.h"
 #include "interp/t_vertex_repair.h"
 #include "mesh/display_mesh.h"
-#include "mesh/load_file.h"
 #include "mesh/topology.h"
+#include "scene/camera_presets.h"
 #include "solve/direct_light.h"
 #include "tests/fuzz/mesh_bytes.h"
 

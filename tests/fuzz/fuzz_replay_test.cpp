@@ -1,7 +1,7 @@
 // The fuzz targets' bodies in the ordinary test build: every input that once crashed a
 // target (tests/fuzz/regressions/) is replayed, and the seeds the targets start from are
 // checked to be what they claim (valid files open, meshes survive their byte encoding).
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/topology.h"
 #include "tests/fuzz/fuzz_inputs.h"
 #include "tests/fuzz/mesh_bytes.h"

@@ -3,7 +3,7 @@
 // byte encoding of tests/fuzz/mesh_bytes.h.
 //   radview_write_mesh_seeds OUT_DIR FILE...
 #include "core/error.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "solve/direct_light.h"
 #include "tests/fuzz/mesh_bytes.h"
 

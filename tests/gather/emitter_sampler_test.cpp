@@ -2,7 +2,7 @@
 
 #include "gather/hemisphere_sampling.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/patch_sampler.h"
+#include "trace/patch_sampler.h"
 
 #include "tests/test_print.h"
 

@@ -6,9 +6,9 @@
 
 #include "gather/emitter_sampler.h"
 #include "gather/hemisphere_sampling.h"
-#include "gather/visible_elements.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
+#include "trace/visible_elements.h"
 
 #include <gtest/gtest.h>
 
@@ -60,7 +60,8 @@ TEST(GatherControlTest, AgreesWithThePlainEstimatorWhereTheBlocksHideTheLight) {
     Rgb direct(0.0), indirect(0.0);
     const EmitterSample s = emitters.sample(u(random), u(random), u(random));
     const Vec3 d = s.position - x;
-    const double r2 = glm::dot(d, d), cosP = glm::dot(n, d) / std::sqrt(r2), cosE = -glm::dot(s.normal, d) / std::sqrt(r2);
+    const double r2 = glm::dot(d, d), cosP = glm::dot(n, d) / std::sqrt(r2),
+                 cosE = -glm::dot(s.normal, d) / std::sqrt(r2);
     if (cosP > 0.0 && cosE > 0.0 && !caster.occluded({x, n, s.position, s.normal}))
       direct = s.E * (cosP * cosE / (kPi * r2 * s.pdfArea));
     const std::optional<RayHit> hit = caster.closestHit({x, cosineWeightedDirection(n, u(random), u(random)), n});
@@ -79,7 +80,8 @@ TEST(GatherControlTest, AgreesWithThePlainEstimatorWhereTheBlocksHideTheLight) {
     if (mesh.materials[size_t(mesh.elements[element].material)].isEmitter()) continue;
     const Vec3 x = centroid(mesh.cornerPositions(element));
     const GatherPoint point = gather.gatherPoint(element, x);
-    const Estimate controlled = estimate(kSamples, [&](int pass) { return gather.samplePoint(point, uint64_t(k), pass); });
+    const Estimate controlled =
+        estimate(kSamples, [&](int pass) { return gather.samplePoint(point, uint64_t(k), pass); });
     const Estimate plain = estimate(kSamples, [&](int) { return plainSample(element, x); });
     std::printf("element %5u: gather %.5f %.5f %.5f, plain %.5f %.5f %.5f (+- %.5f); sample variance %.2e vs %.2e\n",
                 element, controlled.mean.r, controlled.mean.g, controlled.mean.b, plain.mean.r, plain.mean.g,

@@ -2,11 +2,11 @@
 // Scenes for the final gather's tests, each with an answer known in closed form.
 #include "core/camera.h"
 #include "core/image.h"
-#include "gather/camera_rays.h"
 #include "mesh/radiosity_mesh.h"
 #include "mesh/uniform_mesher.h"
 #include "scene/scene.h"
-#include "solve/form_factor.h"
+#include "trace/camera_rays.h"
+#include "trace/form_factor.h"
 
 #include <cmath>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "gather/occluding_polygons.h"
 
 #include "gather/hemisphere_sampling.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,8 @@ namespace {
 
 // A square in the plane z = height, facing +z (counter-clockwise seen from above) or -z.
 std::vector<Vec3> square(double x0, double y0, double side, double height, bool up = true) {
-  std::vector<Vec3> s = {{x0, y0, height}, {x0 + side, y0, height}, {x0 + side, y0 + side, height}, {x0, y0 + side, height}};
+  std::vector<Vec3> s = {
+      {x0, y0, height}, {x0 + side, y0, height}, {x0 + side, y0 + side, height}, {x0, y0 + side, height}};
   if (!up) std::swap(s[1], s[3]);
   return s;
 }
@@ -76,12 +77,12 @@ TEST(OccludingPolygonsTest, PolygonsThatCrossDoNotHideEachOther) {
 // horizon, and a pair that crosses.
 TEST(OccludingPolygonsTest, SeenAlongIntegratesToTheVisibleFormFactors) {
   std::vector<std::vector<Vec3>> scene = {
-      square(-2.0, -2.0, 4.0, 0.0),                                  // floor
-      square(-2.0, -2.0, 4.0, 2.0, false),                           // ceiling, facing down
-      square(-0.6, -0.4, 0.5, 0.7),                                  // a box's top
+      square(-2.0, -2.0, 4.0, 0.0),                                                  // floor
+      square(-2.0, -2.0, 4.0, 2.0, false),                                           // ceiling, facing down
+      square(-0.6, -0.4, 0.5, 0.7),                                                  // a box's top
       {{-0.6, -0.4, 0.0}, {-0.1, -0.4, 0.0}, {-0.1, -0.4, 0.7}, {-0.6, -0.4, 0.7}},  // its front (-y)
       {{-0.1, -0.4, 0.0}, {-0.1, 0.1, 0.0}, {-0.1, 0.1, 0.7}, {-0.1, -0.4, 0.7}},    // its side (+x)
-      square(0.3, 0.2, 0.6, 0.4),                                    // a floating tile
+      square(0.3, 0.2, 0.6, 0.4),                                                    // a floating tile
       {{0.2, 0.5, 0.2}, {1.2, 0.5, 0.2}, {1.2, 0.5, 0.9}, {0.2, 0.5, 0.9}},          // crossing the tile
   };
   const OccludingPolygons polygons(scene);

@@ -2,8 +2,8 @@
 
 #include "core/error.h"
 #include "gather_scenes.h"
-#include "solve/form_factor.h"
 #include "tests/solve/solver_scenes.h"
+#include "trace/form_factor.h"
 
 #include <gtest/gtest.h>
 
@@ -29,16 +29,18 @@ TEST(PathTracerTest, ReceiverUnderASquareEmitterConvergesToLambertsFormula) {
   // receiver sends back meets the emitter, which reflects nothing, so every longer path adds 0.
   const Scene scene = test::receiverUnderSquareEmitter();
   const PathTraceSettings settings = receiverView(64, 64);
-  const std::vector<double> expected = test::expectedReceiverRadiosity(settings.camera, settings.width, settings.height);
+  const std::vector<double> expected =
+      test::expectedReceiverRadiosity(settings.camera, settings.width, settings.height);
   PathTracer tracer(scene, settings);
   std::vector<test::ErrorFigures> figures;
   for (int spp : {1, 4, 16, 64}) {
     tracer.addPasses(spp - tracer.samplesPerPixel());
     figures.push_back(test::errorAgainst(tracer.image(), expected));
     const test::ErrorFigures& f = figures.back();
-    std::printf("path tracer, receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error "
-                "%+.6f\n",
-                spp, f.rmse, 100.0 * f.rmse / f.meanExpected, f.meanExpected, f.meanSigned);
+    std::printf(
+        "path tracer, receiver under a square emitter, %2d spp: RMSE %.5f (%.2f%% of the mean %.5f), mean error "
+        "%+.6f\n",
+        spp, f.rmse, 100.0 * f.rmse / f.meanExpected, f.meanExpected, f.meanSigned);
   }
   ASSERT_GT(figures[0].pixels, 1000u);
   // At least independent samples' N^-1/2 at each step (a bias floor fails it).

@@ -4,7 +4,7 @@
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "gl/method_pieces.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include <gtest/gtest.h>
 

@@ -9,13 +9,13 @@
 #include "bench/image_error.h"
 #include "bench/mach_bands.h"
 #include "core/camera.h"
-#include "gather/camera_rays.h"
 #include "gather/final_gather.h"
-#include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "mesh/uniform_mesher.h"
 #include "tests/closed_form_scenes.h"
+#include "trace/camera_rays.h"
+#include "trace/visible_elements.h"
 
 #include <gtest/gtest.h>
 

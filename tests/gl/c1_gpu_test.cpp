@@ -3,8 +3,8 @@
 #include "core/camera.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "import/load_file.h"
 #include "interp/interpolant.h"
-#include "mesh/load_file.h"
 #include "tests/gl/pixel_reference.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include "core/image_difference.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include <gtest/gtest.h>
 

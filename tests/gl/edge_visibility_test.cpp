@@ -10,8 +10,9 @@
 #include "core/error.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "import/load_file.h"
 #include "interp/method_registry.h"
-#include "mesh/load_file.h"
+#include "scene/camera_presets.h"
 
 #include <gtest/gtest.h>
 

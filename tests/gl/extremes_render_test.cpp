@@ -12,7 +12,7 @@
 //  - the same image at 1e5 from the origin and at other scales as at unit scale.
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "tests/extreme_scenes.h"

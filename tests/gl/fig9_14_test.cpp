@@ -5,10 +5,10 @@
 #include "bench/mach_bands.h"
 #include "core/camera.h"
 #include "gather/final_gather.h"
-#include "gather/visible_elements.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
+#include "trace/visible_elements.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 #include "core/camera.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
+#include "import/load_file.h"
 #include "interp/interpolant.h"
-#include "mesh/load_file.h"
 #include "tests/gl/pixel_reference.h"
 
 #include <gtest/gtest.h>
@@ -162,7 +162,8 @@ TEST(PolygonMethods, QuadraticPerPixelIsTheCpuReference) {
 // irregular convex 8-node serendipity quad 0-1-2-3 and a 6-node triangle 3-2-4 beside it, each
 // mid-edge node with a value unrelated to its corners'.
 void addQuadraticElements(RadiosityMesh& mesh, const std::vector<Vec3>& corners, const std::vector<double>& values) {
-  for (size_t i = 0; i < corners.size(); ++i) mesh.nodes.push_back({corners[i], Rgb(values[i], 1 - values[i], 0.5), {}});
+  for (size_t i = 0; i < corners.size(); ++i)
+    mesh.nodes.push_back({corners[i], Rgb(values[i], 1 - values[i], 0.5), {}});
   auto mid = [&](uint32_t a, uint32_t b, double value) {
     mesh.nodes.push_back({0.5 * (corners[a] + corners[b]), Rgb(value, 0.3, 1 - value), {}});
     return uint32_t(mesh.nodes.size() - 1);
@@ -194,10 +195,16 @@ TEST(PolygonMethods, LinearElementsBesideQuadraticOnesArePerPixelTheCpuReference
   RadiosityMesh mesh;
   mesh.materials.push_back(Material{"m", Rgb(0.5), Rgb(0.0)});
   addQuadraticElements(mesh,
-                       {{-0.5, -0.5, 0}, {0.45, -0.55, 0}, {0.6, 0.4, 0}, {-0.4, 0.5, 0}, {0.1, 0.9, 0},
-                        {-0.5, -1.1, 0}, {0.4, -1.2, 0}, {1.1, -0.2, 0}},
+                       {{-0.5, -0.5, 0},
+                        {0.45, -0.55, 0},
+                        {0.6, 0.4, 0},
+                        {-0.4, 0.5, 0},
+                        {0.1, 0.9, 0},
+                        {-0.5, -1.1, 0},
+                        {0.4, -1.2, 0},
+                        {1.1, -0.2, 0}},
                        {0.2, 0.9, 0.4, 0.6, 0.35, 0.75, 0.05, 0.5});
-  mesh.elements.insert(mesh.elements.begin(), Element{{5, 6, 1, 0}, {}, 0, 0});  // a linear quad below edge 0-1
+  mesh.elements.insert(mesh.elements.begin(), Element{{5, 6, 1, 0}, {}, 0, 0});   // a linear quad below edge 0-1
   mesh.elements.insert(mesh.elements.begin() + 2, Element{{1, 7, 2}, {}, 0, 0});  // a linear triangle right of 1-2
   ASSERT_TRUE(isSerendipityQuad(mesh, 1));
   ASSERT_TRUE(isQuadraticTriangle(mesh.elements[3]));

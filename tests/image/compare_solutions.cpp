@@ -4,7 +4,7 @@
 // more than 1e-3 of the largest value). Says which to rerun when they differ.
 //   compare_solutions BUNDLED FRESH SCRIPT
 #include "core/error.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include <algorithm>
 #include <cstdio>

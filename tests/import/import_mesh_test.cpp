@@ -1,7 +1,7 @@
-// Other tools' meshes as radiosity meshes (mesh/load_file.h): the same mesh as PLY (float and
+// Other tools' meshes as radiosity meshes (import/load_file.h): the same mesh as PLY (float and
 // 8-bit), OBJ and glTF COLOR_0 gives each node its value at the node; quads stay quads; the
 // colour conventions, the optional readings and every refusal the issue names.
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include "core/display_transform.h"
 #include "import/ply_mesh.h"
@@ -275,12 +275,14 @@ TEST(ImportMesh, AssumedReflectanceAndEmittersLetTheGatherRun) {
   const SameMesh same;
   const std::string path = writeTestFile("float.ply", same.plyFloatAscii());
   EXPECT_EQ(loadFile(path).gatherRefusal,
-            "this file gives no reflectance and no emitter, which the final gather and the path tracer need (give --rho R,G,B and "
+            "this file gives no reflectance and no emitter, which the final gather and the path tracer need (give "
+            "--rho R,G,B and "
             "--emitters-above LUMINANCE)");
   ImportOptions options;
   options.rho = Rgb(0.5, 0.6, 0.7);
-  EXPECT_EQ(loadFile(path, options).gatherRefusal,
-            "this file gives no emitter, which the final gather and the path tracer need (give --emitters-above LUMINANCE)");
+  EXPECT_EQ(
+      loadFile(path, options).gatherRefusal,
+      "this file gives no emitter, which the final gather and the path tracer need (give --emitters-above LUMINANCE)");
   options.emittersAbove = 0.15;  // the right quad's nodes all reach it, the left quad's do not
   const LoadedFile lit = loadFile(path, options);
   EXPECT_EQ(lit.gatherRefusal, "");
@@ -295,8 +297,9 @@ TEST(ImportMesh, AssumedReflectanceAndEmittersLetTheGatherRun) {
             std::string::npos);
 
   // glTF materials carry rho; only the emitter is missing.
-  EXPECT_EQ(loadFile(writeTestFile("colour.gltf", same.gltfColour0())).gatherRefusal,
-            "this file gives no emitter, which the final gather and the path tracer need (give --emitters-above LUMINANCE)");
+  EXPECT_EQ(
+      loadFile(writeTestFile("colour.gltf", same.gltfColour0())).gatherRefusal,
+      "this file gives no emitter, which the final gather and the path tracer need (give --emitters-above LUMINANCE)");
 }
 
 TEST(ImportMesh, ObjMaterialLibraryGivesReflectanceAndEmission) {
@@ -307,7 +310,8 @@ TEST(ImportMesh, ObjMaterialLibraryGivesReflectanceAndEmission) {
   const std::string path = writeTestFile("box.obj", obj);
   std::filesystem::remove(std::filesystem::path(path).parent_path() / "box.mtl");  // from an earlier run
   EXPECT_EQ(loadFile(path).gatherRefusal,
-            "this file gives no reflectance and no emitter, which the final gather and the path tracer need (give --rho R,G,B and "
+            "this file gives no reflectance and no emitter, which the final gather and the path tracer need (give "
+            "--rho R,G,B and "
             "--emitters-above LUMINANCE)");  // box.mtl is not there yet
   writeTestFile("box.mtl", "newmtl light\nKd 0.1 0.2 0.3\nKe 5 5 5\nnewmtl wall\nKd 0.7 0.6 0.5\n");
   const LoadedFile file = loadFile(path);

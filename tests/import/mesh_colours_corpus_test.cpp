@@ -1,7 +1,7 @@
 // loadFile over every file of the third-party vertex-colour corpus (shared/corpus/mesh-colours,
 // PLY and OBJ from assimp, trimesh, draco, ply-rs, tinyobjloader and a radiosity solver): each
 // opens with the nodes and faces its README lists, or is refused with the reason it deserves.
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include "core/error.h"
 

@@ -5,6 +5,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "interp/interpolant.h"
+#include "scene/camera_presets.h"
 
 #include <gtest/gtest.h>
 

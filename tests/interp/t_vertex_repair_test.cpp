@@ -1,6 +1,6 @@
 #include "interp/t_vertex_repair.h"
 
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/topology.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The bundled assets hold what they claim. assets/fig9_8_quad.gltf and
 // assets/discontinuities.gltf are written by the solution writer from the definitions below:
 //   RADVIEW_UPDATE_ASSETS=1 build/radview_unit_tests --gtest_filter='BundledAssets.*'
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 

@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "core/limits.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "scene/gltf_document.h"
 #include "scene/gltf_import.h"
 

@@ -2,7 +2,7 @@
 // load or are refused with a reason; invalid files are refused, or load with at least one
 // warning saying what radview left out. Nothing may crash or hang, which is worth running once
 // in a build with -fsanitize=address,undefined: the corpus is full of hostile byte ranges.
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include "core/error.h"
 #include "scene/gltf_document.h"

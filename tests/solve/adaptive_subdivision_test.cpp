@@ -2,8 +2,8 @@
 // carried through splits, quadratic elements, and the solution file round trip.
 #include "solve/adaptive_subdivision.h"
 
+#include "import/load_file.h"
 #include "interp/t_vertex_repair.h"
-#include "mesh/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "mesh/uniform_mesher.h"

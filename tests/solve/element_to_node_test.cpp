@@ -4,7 +4,7 @@
 #include "solve/element_to_node.h"
 
 #include "geom/polygon.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>

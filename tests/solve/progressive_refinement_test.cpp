@@ -3,10 +3,10 @@
 #include "solve/progressive_refinement.h"
 
 #include "core/error.h"
+#include "discontinuity/contact_cut.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/contact_cut.h"
 #include "solve/element_to_node.h"
 #include "solve/radiosity_solve.h"
 #include "tests/error_message.h"
@@ -195,8 +195,8 @@ TEST(ProgressiveRefinementTest, TheCeilingAlongTheOutlineOfALightAHairBelowItIsN
   ASSERT_GT(nearCount, 4);
   onOutline /= onCount;
   near /= nearCount;
-  std::printf("ceiling: B on the light's outline %.4f, 5-60 mm out %.4f (%d and %d nodes)\n", onOutline, near,
-              onCount, nearCount);
+  std::printf("ceiling: B on the light's outline %.4f, 5-60 mm out %.4f (%d and %d nodes)\n", onOutline, near, onCount,
+              nearCount);
   EXPECT_GT(onOutline, 0.95 * near);
 }
 

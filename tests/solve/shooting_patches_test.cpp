@@ -3,9 +3,9 @@
 #include "solve/shooting_patches.h"
 
 #include "core/error.h"
+#include "discontinuity/discontinuity_mesher.h"
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/discontinuity_mesher.h"
 #include "solve/progressive_refinement.h"
 
 #include <gtest/gtest.h>

@@ -3,10 +3,10 @@
 // checked against closed forms and against Cycles) on every surface.
 #include "gather/path_tracer.h"
 #include "geom/polygon.h"
+#include "import/load_file.h"
 #include "interp/interpolant.h"
-#include "mesh/load_file.h"
-#include "solve/patch_sampler.h"
 #include "solve/radiosity_solve.h"
+#include "trace/patch_sampler.h"
 
 #include <gtest/gtest.h>
 
@@ -83,8 +83,8 @@ void expectSolveAgreesWithTheTruth(const SolveSettings& settings, int points, in
       variance += d * d / (points - 1);
     }
     agreement.standardError = std::sqrt(variance / points) / agreement.truth;
-    std::printf("surface %2d (%s): solution / truth %.4f +- %.4f\n", surface, material.name.c_str(),
-                agreement.ratio(), agreement.standardError);
+    std::printf("surface %2d (%s): solution / truth %.4f +- %.4f\n", surface, material.name.c_str(), agreement.ratio(),
+                agreement.standardError);
     if (agreement.truth <= 0.0) continue;
     const double allowed = wider.count(surface) ? wider.at(surface) : tolerance;
     EXPECT_NEAR(agreement.ratio(), 1.0, allowed + 4.0 * agreement.standardError) << "surface " << surface;

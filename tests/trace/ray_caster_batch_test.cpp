@@ -2,7 +2,7 @@
 // stream) answers as one ray at a time does, ray for ray: in the Cornell box, from points on
 // the floor (many in the blocks' shadows) to points on the light, in streams of every length
 // the solver makes and longer, and in the solver's form, one point to many.
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include "tests/solve/cornell_box.h"
 

@@ -1,9 +1,9 @@
 #pragma once
 // The critical-line test of discontinuity meshing (discontinuity_events.h) answered by rays
 // through Embree against the scene's polygons.
+#include "discontinuity/discontinuity_events.h"
 #include "scene/scene.h"
-#include "solve/discontinuity_events.h"
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include <vector>
 

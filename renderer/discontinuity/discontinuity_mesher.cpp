@@ -1,12 +1,12 @@
-#include "solve/discontinuity_mesher.h"
+#include "discontinuity/discontinuity_mesher.h"
 
 #include "core/error.h"
+#include "discontinuity/critical_lines.h"
+#include "discontinuity/discontinuity_events.h"
+#include "discontinuity/discontinuity_segments.h"
 #include "geom/constrained_mesh_cgal.h"
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"
-#include "solve/critical_lines.h"
-#include "solve/discontinuity_events.h"
-#include "solve/discontinuity_segments.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include "core/error.h"
 #include "geom/embree_device.h"

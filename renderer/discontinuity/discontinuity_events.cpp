@@ -1,4 +1,4 @@
-#include "solve/discontinuity_events.h"
+#include "discontinuity/discontinuity_events.h"
 
 #include "geom/polygon.h"
 

@@ -1,12 +1,12 @@
 // Discontinuity events against their closed forms: parallel squares (D1, similar triangles),
 // a rotated occluder (D2), culling, and the segment clipper.
-#include "solve/discontinuity_events.h"
+#include "discontinuity/discontinuity_events.h"
 
+#include "discontinuity/critical_lines.h"
+#include "discontinuity/discontinuity_mesher.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/topology.h"
-#include "solve/critical_lines.h"
-#include "solve/discontinuity_mesher.h"
 
 #include "tests/test_print.h"
 
@@ -336,7 +336,8 @@ TEST(DiscontinuityEventsTest, APolygonLyingAHairInFrontOfAnotherLeavesItsOutline
     const PlaneFrame frame = planeFrame(scene.polygons[0].vertices);
     for (const Vec2& end : {edge.a, edge.b}) {
       double nearest = 1e9;
-      for (const Vec3& v : scene.polygons[1].vertices) nearest = std::min(nearest, glm::distance(end, frame.project(v)));
+      for (const Vec3& v : scene.polygons[1].vertices)
+        nearest = std::min(nearest, glm::distance(end, frame.project(v)));
       EXPECT_LT(nearest, 1e-12);
     }
   }

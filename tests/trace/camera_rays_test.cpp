@@ -1,7 +1,7 @@
-#include "gather/camera_rays.h"
+#include "trace/camera_rays.h"
 
 #include "gather/final_gather.h"
-#include "gather_scenes.h"
+#include "tests/gather/gather_scenes.h"
 #include "tests/test_print.h"
 
 #include <gtest/gtest.h>

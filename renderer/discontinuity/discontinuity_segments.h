@@ -8,8 +8,8 @@
 // events computed along the same line in different ways (an EV and a VE wedge of parallel
 // edges) would differ by rounding and leave triangles 1e-16 wide.
 #include "core/limits.h"
+#include "discontinuity/discontinuity_events.h"
 #include "geom/constrained_mesh_cgal.h"
-#include "solve/discontinuity_events.h"
 
 #include <cstddef>
 #include <vector>

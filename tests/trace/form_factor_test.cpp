@@ -1,4 +1,4 @@
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include "geom/polygon.h"
 

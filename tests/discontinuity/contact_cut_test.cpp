@@ -1,5 +1,5 @@
 // A uniform mesh cut along the blocks' footprints, and rid of what the blocks cover.
-#include "solve/contact_cut.h"
+#include "discontinuity/contact_cut.h"
 
 #include "geom/polygon.h"
 #include "mesh/uniform_mesher.h"

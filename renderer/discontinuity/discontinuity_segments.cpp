@@ -1,4 +1,4 @@
-#include "solve/discontinuity_segments.h"
+#include "discontinuity/discontinuity_segments.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "gather/visible_elements.h"
+#include "trace/visible_elements.h"
 
 #include "core/parallel_for.h"
-#include "gather/camera_rays.h"
-#include "solve/ray_caster.h"
+#include "trace/camera_rays.h"
+#include "trace/ray_caster.h"
 
 namespace radview {
 

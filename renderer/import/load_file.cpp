@@ -1,4 +1,4 @@
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 
 #include "core/error.h"
 #include "core/input_file.h"

@@ -5,7 +5,7 @@
 // each sampled on a jittered k x k grid of its parameter square, every sample weighted by the
 // area it stands for.
 #include "core/types.h"
-#include "solve/form_factor.h"
+#include "trace/form_factor.h"
 
 #include <cstdint>
 #include <vector>

@@ -2,7 +2,7 @@
 // The eye rays of the GL renderer's camera, so that a final-gather image lines up with a GL
 // render of the same camera and size pixel for pixel.
 #include "core/camera.h"
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 namespace radview {
 

@@ -1,4 +1,4 @@
-#include "solve/critical_lines.h"
+#include "discontinuity/critical_lines.h"
 
 #include "geom/polygon.h"
 

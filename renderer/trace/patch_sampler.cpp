@@ -1,4 +1,4 @@
-#include "solve/patch_sampler.h"
+#include "trace/patch_sampler.h"
 
 #include "core/error.h"
 #include "geom/polygon.h"

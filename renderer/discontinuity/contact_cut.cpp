@@ -1,8 +1,8 @@
-#include "solve/contact_cut.h"
+#include "discontinuity/contact_cut.h"
 
+#include "discontinuity/discontinuity_events.h"
 #include "geom/polygon.h"
-#include "solve/discontinuity_events.h"
-#include "solve/ray_caster.h"
+#include "trace/ray_caster.h"
 
 #include <algorithm>
 #include <map>

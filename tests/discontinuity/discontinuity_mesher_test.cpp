@@ -1,15 +1,15 @@
 // The discontinuity mesh as a whole: D0 contacts with duplicated nodes, the Cornell box,
 // solution files, and robustness on degenerate input.
-#include "solve/discontinuity_mesher.h"
+#include "discontinuity/discontinuity_mesher.h"
 
+#include "discontinuity/discontinuity_segments.h"
 #include "geom/constrained_mesh_cgal.h"
 #include "geom/polygon.h"
-#include "mesh/load_file.h"
+#include "import/load_file.h"
 #include "mesh/solution_file.h"
 #include "mesh/topology.h"
 #include "scene/gltf_document.h"
 #include "solve/direct_light.h"
-#include "solve/discontinuity_segments.h"
 
 #include "tests/test_print.h"
 

@@ -1,4 +1,4 @@
-#include "gather/camera_rays.h"
+#include "trace/camera_rays.h"
 
 namespace radview {
 
