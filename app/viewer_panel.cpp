@@ -330,9 +330,9 @@ void drawPanel(ViewerState& state) {
   ImGui::Checkbox("Element edges [E]", &state.settings.elementEdges);
   ImGui::Checkbox("Discontinuity edges [D]", &state.settings.discontinuityEdges);
   ImGui::SameLine();
-  ImGui::TextColored(ImVec4(kDiscontinuityCm1Color.r, kDiscontinuityCm1Color.g, kDiscontinuityCm1Color.b, 1), "C-1");
+  ImGui::TextColored(ImVec4(kDiscontinuityCm1Colour.r, kDiscontinuityCm1Colour.g, kDiscontinuityCm1Colour.b, 1), "C-1");
   ImGui::SameLine();
-  ImGui::TextColored(ImVec4(kDiscontinuityC0Color.r, kDiscontinuityC0Color.g, kDiscontinuityC0Color.b, 1), "C0");
+  ImGui::TextColored(ImVec4(kDiscontinuityC0Colour.r, kDiscontinuityC0Colour.g, kDiscontinuityC0Colour.b, 1), "C0");
   const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);

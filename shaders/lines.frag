@@ -1,4 +1,4 @@
 #version 450 core
-uniform vec4 color;
+uniform vec4 colour;
 layout(location = 0) out vec4 display;
-void main() { display = color; }
+void main() { display = colour; }

@@ -1,4 +1,4 @@
 #version 450 core
-in vec4 vColor;
+in vec4 vColour;
 layout(location = 0) out vec4 display;
-void main() { display = vColor; }
+void main() { display = vColour; }

@@ -4,7 +4,7 @@
 // On the radiosity surface (fig. 9.13) the value is shaded by the surface's slope towards the
 // eye, so its shape reads.
 uniform bool wireframe;
-uniform vec4 wireColor;
+uniform vec4 wireColour;
 uniform bool shadeSurface;
 uniform vec3 eye;
 in vec3 teB;
@@ -12,7 +12,7 @@ in vec3 teWorld;
 layout(location = 0) out vec4 radiosity;
 void main() {
   if (wireframe) {
-    radiosity = wireColor;
+    radiosity = wireColour;
     return;
   }
   float shade = 1.0;

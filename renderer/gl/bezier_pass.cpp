@@ -106,12 +106,12 @@ void BezierPass::draw(const glm::mat4& clipFromWorld, const BezierEvaluation& ev
 }
 
 void BezierPass::drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation,
-                               const glm::vec4& color) {
+                               const glm::vec4& colour) {
   if (evaluation.tessellation == 0 || vertices_.empty()) return;
   glBindVertexArray(vao_);
   tessellated().set("clipFromWorld", clipFromWorld);
   tessellated().set("wireframe", 1);
-  tessellated().set("wireColor", color);
+  tessellated().set("wireColour", colour);
   glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
   size_t draws = 0;
   drawTessellated(evaluation, draws);

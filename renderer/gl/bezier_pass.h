@@ -51,9 +51,9 @@ class BezierPass {
   // generates more than 50k triangles: past ~91k per draw llvmpipe corrupts these patches
   // (bezier_pass.cpp); the adaptive levels are computed on the CPU too for that.
   void draw(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation);
-  // The generated triangles as lines of `color` (the tessellation overlay), same levels as
+  // The generated triangles as lines of `colour` (the tessellation overlay), same levels as
   // draw(); nothing when evaluating per pixel.
-  void drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation, const glm::vec4& color);
+  void drawTriangles(const glm::mat4& clipFromWorld, const BezierEvaluation& evaluation, const glm::vec4& colour);
   const TessellationStatistics& statistics() const { return statistics_; }
   const std::vector<BezierVertex>& vertices() const { return vertices_; }
   int degree() const { return degree_; }

@@ -121,9 +121,9 @@ void DeferredPass::drawForward(const glm::mat4& clipFromWorld, GLuint target) {
 }
 
 void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
-  GLint color = 0;
+  GLint colour = 0;
   glGetNamedFramebufferAttachmentParameteriv(target, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
-                                             &color);
+                                             &colour);
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 
   // Pass 1: visibility and depth, into the target's colour.
@@ -140,7 +140,7 @@ void DeferredPass::drawDeferred(const glm::mat4& clipFromWorld, GLuint target) {
   resolve.set("visibility", 0);
   resolve.set("nets", 1);
   resolve.use();
-  glBindTextureUnit(0, GLuint(color));
+  glBindTextureUnit(0, GLuint(colour));
   glBindTextureUnit(1, netsTexture_);
   glBindVertexArray(emptyVao_);
   glDrawArrays(GL_TRIANGLES, 0, 3);

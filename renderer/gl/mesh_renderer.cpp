@@ -18,11 +18,11 @@ namespace {
 
 // RGBA pixels of a framebuffer's colour buffer, top row first (OpenGL reads bottom-up).
 template <typename T>
-std::vector<T> readPixels(GLuint framebuffer, GLenum colorBuffer, int width, int height, GLenum type) {
+std::vector<T> readPixels(GLuint framebuffer, GLenum colourBuffer, int width, int height, GLenum type) {
   std::vector<T> pixels(size_t(width) * height * 4);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  glReadBuffer(colorBuffer);
+  glReadBuffer(colourBuffer);
   glReadPixels(0, 0, width, height, GL_RGBA, type, pixels.data());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   std::vector<T> rows(pixels.size());
@@ -94,7 +94,7 @@ MeshRenderer::MeshRenderer() {
   floatAttribute(netVao_, 0, 3, 0);
   createVertexArray(overlayVao_, overlayVbo_, sizeof(OverlayVertex));
   floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
-  floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, color));
+  floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, colour));
 
   polygonCorners_ = GlObject(GlKind::Buffer);
   polygonOffsets_ = GlObject(GlKind::Buffer);
@@ -525,9 +525,9 @@ void MeshRenderer::drawDisplayPass(const RenderSettings& settings, const FrameCo
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& color, const glm::mat4& clipFromWorld) {
+void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& colour, const glm::mat4& clipFromWorld) {
   linesProgram_.set("clipFromWorld", clipFromWorld);
-  linesProgram_.set("color", color);
+  linesProgram_.set("colour", colour);
   linesProgram_.use();
   glBindVertexArray(vao);
   glDrawArrays(GL_LINES, 0, vertices);
@@ -566,12 +566,12 @@ void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& ca
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  if (settings.elementEdges && edgeVertices_ > 0) drawLines(edgeVao_, edgeVertices_, settings.edgeColor, clipFromWorld);
+  if (settings.elementEdges && edgeVertices_ > 0) drawLines(edgeVao_, edgeVertices_, settings.edgeColour, clipFromWorld);
   if (bezierMethod) {
     if (settings.tessellationTriangles)
-      bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColor);
-    if (settings.splitLines && splitVertices_ > 0) drawLines(splitVao_, splitVertices_, kSplitLineColor, clipFromWorld);
-    if (drawNet && netVertices_ > 0) drawLines(netVao_, netVertices_, kControlNetColor, clipFromWorld);
+      bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColour);
+    if (settings.splitLines && splitVertices_ > 0) drawLines(splitVao_, splitVertices_, kSplitLineColour, clipFromWorld);
+    if (drawNet && netVertices_ > 0) drawLines(netVao_, netVertices_, kControlNetColour, clipFromWorld);
   }
   if (markers) {
     glEnable(GL_PROGRAM_POINT_SIZE);

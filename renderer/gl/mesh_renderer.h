@@ -60,7 +60,7 @@ struct RenderSettings {
   double surfaceHeight = 0.0;
   bool controlNet = false;  // with the radiosity surface: its Bezier control net
   glm::vec3 background{0.08f, 0.08f, 0.09f};
-  glm::vec4 edgeColor{0.0f, 0.0f, 0.0f, 1.0f};
+  glm::vec4 edgeColour{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 struct DeferredSetup;  // gl/method_pieces.h
@@ -202,7 +202,7 @@ class MeshRenderer {
                     int height, bool drawNet);
   void drawOverlayDepth(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, int width,
                         int height);
-  void drawLines(GLuint vao, GLsizei vertices, const glm::vec4& color, const glm::mat4& clipFromWorld);
+  void drawLines(GLuint vao, GLsizei vertices, const glm::vec4& colour, const glm::mat4& clipFromWorld);
   // Pass 1 for `method` into the bound framebuffer (cleared there): linear radiosity and depth;
   // `comparison` when it is the difference view's comparison. `depthOnly`: the depth that
   // leaves (the caller masks colour writes), without the deferred evaluation.

@@ -33,9 +33,9 @@ void RenderTargets::release() {
   glDeleteFramebuffers(1, &linearFbo_);
   glDeleteFramebuffers(1, &displayFbo_);
   glDeleteFramebuffers(1, &comparisonFbo_);
-  GLuint textures[] = {linearColor_, displayColor_, depth_, comparisonColor_};
+  GLuint textures[] = {linearColour_, displayColour_, depth_, comparisonColour_};
   glDeleteTextures(4, textures);
-  linearFbo_ = displayFbo_ = linearColor_ = displayColor_ = depth_ = comparisonFbo_ = comparisonColor_ = 0;
+  linearFbo_ = displayFbo_ = linearColour_ = displayColour_ = depth_ = comparisonFbo_ = comparisonColour_ = 0;
   width_ = height_ = 0;
 }
 
@@ -53,14 +53,14 @@ void RenderTargets::resize(int width, int height) {
                 std::to_string(std::min(maxTexture, maxHeight)) +
                 " (GL_MAX_TEXTURE_SIZE, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT)");
   release();
-  linearColor_ = texture(GL_RGBA32F, width, height);
-  displayColor_ = texture(GL_RGBA8, width, height);
+  linearColour_ = texture(GL_RGBA32F, width, height);
+  displayColour_ = texture(GL_RGBA8, width, height);
   depth_ = texture(GL_DEPTH_COMPONENT32F, width, height);
   glCreateFramebuffers(1, &linearFbo_);
-  glNamedFramebufferTexture(linearFbo_, GL_COLOR_ATTACHMENT0, linearColor_, 0);
+  glNamedFramebufferTexture(linearFbo_, GL_COLOR_ATTACHMENT0, linearColour_, 0);
   glNamedFramebufferTexture(linearFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
   glCreateFramebuffers(1, &displayFbo_);
-  glNamedFramebufferTexture(displayFbo_, GL_COLOR_ATTACHMENT0, displayColor_, 0);
+  glNamedFramebufferTexture(displayFbo_, GL_COLOR_ATTACHMENT0, displayColour_, 0);
   glNamedFramebufferTexture(displayFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
   try {
     requireComplete(linearFbo_, "linear");
@@ -73,18 +73,18 @@ void RenderTargets::resize(int width, int height) {
   height_ = height;
 }
 
-GLuint RenderTargets::ensureWithDepth(GLenum format, GLuint& color, GLuint& fbo, const char* name) {
+GLuint RenderTargets::ensureWithDepth(GLenum format, GLuint& colour, GLuint& fbo, const char* name) {
   if (fbo) return fbo;
-  color = texture(format, width_, height_);
+  colour = texture(format, width_, height_);
   glCreateFramebuffers(1, &fbo);
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, colour, 0);
   glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth_, 0);
   requireComplete(fbo, name);
   return fbo;
 }
 
 GLuint RenderTargets::ensureComparison() {
-  return ensureWithDepth(GL_RGBA32F, comparisonColor_, comparisonFbo_, "comparison");
+  return ensureWithDepth(GL_RGBA32F, comparisonColour_, comparisonFbo_, "comparison");
 }
 
 }  // namespace radview::gl

@@ -22,21 +22,21 @@ class RenderTargets {
   int height() const { return height_; }
   GLuint linearFramebuffer() const { return linearFbo_; }
   GLuint displayFramebuffer() const { return displayFbo_; }
-  GLuint linearTexture() const { return linearColor_; }
+  GLuint linearTexture() const { return linearColour_; }
   // The comparison target, sharing the depth buffer (each pass clears it), made on the first
   // call. Throws Error as resize.
   GLuint ensureComparison();
   GLuint comparisonFramebuffer() const { return comparisonFbo_; }  // 0 until ensureComparison
-  GLuint comparisonTexture() const { return comparisonColor_; }
+  GLuint comparisonTexture() const { return comparisonColour_; }
 
  private:
   void release();
-  // `fbo` with a new `format` texture as `color` and the shared depth, unless made already.
-  GLuint ensureWithDepth(GLenum format, GLuint& color, GLuint& fbo, const char* name);
+  // `fbo` with a new `format` texture as `colour` and the shared depth, unless made already.
+  GLuint ensureWithDepth(GLenum format, GLuint& colour, GLuint& fbo, const char* name);
   int width_ = 0, height_ = 0;
   GLuint linearFbo_ = 0, displayFbo_ = 0;
-  GLuint linearColor_ = 0, displayColor_ = 0, depth_ = 0;
-  GLuint comparisonFbo_ = 0, comparisonColor_ = 0;
+  GLuint linearColour_ = 0, displayColour_ = 0, depth_ = 0;
+  GLuint comparisonFbo_ = 0, comparisonColour_ = 0;
 };
 
 }  // namespace radview::gl

@@ -134,12 +134,12 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topo
   }
   for (const DiscontinuityEdge& d : mesh.discontinuities) {
     if (d.order == Continuity::C1) continue;
-    const glm::vec4 color = d.order == Continuity::Cm1 ? kDiscontinuityCm1Color : kDiscontinuityC0Color;
-    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.a].position), color});
-    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.b].position), color});
+    const glm::vec4 colour = d.order == Continuity::Cm1 ? kDiscontinuityCm1Colour : kDiscontinuityC0Colour;
+    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.a].position), colour});
+    out.discontinuityEdges.push_back({toFloat(mesh.nodes[d.b].position), colour});
   }
   for (const TVertex& t : topology.tVertices())
-    out.tVertices.push_back({toFloat(mesh.nodes[t.node].position), kTVertexColor});
+    out.tVertices.push_back({toFloat(mesh.nodes[t.node].position), kTVertexColour});
   return out;
 }
 

@@ -22,16 +22,16 @@ struct DisplayVertex {
 
 struct OverlayVertex {
   glm::vec3 position;
-  glm::vec4 color;
+  glm::vec4 colour;
 };
 
 // Overlay colours, also the panel's legend.
-inline constexpr glm::vec4 kDiscontinuityCm1Color{1.0f, 0.25f, 0.2f, 1.0f};  // C-1: value jumps
-inline constexpr glm::vec4 kDiscontinuityC0Color{1.0f, 0.85f, 0.1f, 1.0f};   // C0: derivative jumps
-inline constexpr glm::vec4 kTVertexColor{1.0f, 0.1f, 1.0f, 1.0f};
-inline constexpr glm::vec4 kSplitLineColor{0.1f, 0.9f, 0.9f, 1.0f};      // Bezier piece boundaries
-inline constexpr glm::vec4 kTessellationColor{0.2f, 0.35f, 1.0f, 1.0f};  // generated triangles
-inline constexpr glm::vec4 kControlNetColor{1.0f, 0.55f, 0.1f, 1.0f};    // the surface's Bezier control net
+inline constexpr glm::vec4 kDiscontinuityCm1Colour{1.0f, 0.25f, 0.2f, 1.0f};  // C-1: value jumps
+inline constexpr glm::vec4 kDiscontinuityC0Colour{1.0f, 0.85f, 0.1f, 1.0f};   // C0: derivative jumps
+inline constexpr glm::vec4 kTVertexColour{1.0f, 0.1f, 1.0f, 1.0f};
+inline constexpr glm::vec4 kSplitLineColour{0.1f, 0.9f, 0.9f, 1.0f};      // Bezier piece boundaries
+inline constexpr glm::vec4 kTessellationColour{0.2f, 0.35f, 1.0f, 1.0f};  // generated triangles
+inline constexpr glm::vec4 kControlNetColour{1.0f, 0.55f, 0.1f, 1.0f};    // the surface's Bezier control net
 
 struct DisplayMesh {
   std::vector<DisplayVertex> triangles;           // three vertices per triangle

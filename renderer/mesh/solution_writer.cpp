@@ -254,13 +254,13 @@ class SolutionWriter {
       surfaces.push_back(uint32_t(element.surface + 1));  // 0: unknown
     }
 
-    std::vector<glm::vec3> positions, normals, colors, radiosity;
+    std::vector<glm::vec3> positions, normals, colours, radiosity;
     std::array<std::vector<glm::vec3>, 3> gradients;
     for (uint32_t v = 0; v < nodes.size(); ++v) {
       const Node& node = mesh_.nodes[nodes[v]];
       positions.push_back(toFloat(node.position, nodes[v], "the position"));
       radiosity.push_back(toFloat(node.B, nodes[v], "radiosity"));
-      colors.push_back(glm::vec3(glm::clamp(node.B * scale, 0.0, 1.0)));
+      colours.push_back(glm::vec3(glm::clamp(node.B * scale, 0.0, 1.0)));
       const double length = glm::length(normalSum[v]);
       normals.push_back(glm::vec3(length > 1e-12 ? normalSum[v] / length : anyNormal[v]));
       if (mesh_.hasGradients)
@@ -274,7 +274,7 @@ class SolutionWriter {
     p.indices = buffer_.uints(indices, kElementArrayBuffer);
     p.attributes["POSITION"] = buffer_.vec3s(positions, true);
     p.attributes["NORMAL"] = buffer_.vec3s(normals, false);
-    p.attributes["COLOR_0"] = buffer_.vec3s(colors, false);
+    p.attributes["COLOR_0"] = buffer_.vec3s(colours, false);
     p.attributes["_RADIOSITY"] = buffer_.vec3s(radiosity, false);
     if (mesh_.hasGradients)
       for (int c = 0; c < 3; ++c) p.attributes[kGradientAttributes[c]] = buffer_.vec3s(gradients[size_t(c)], false);

@@ -120,7 +120,7 @@ class MeshRendererTest : public ::testing::Test {
   size_t magentaEdgePixels() {
     RenderSettings settings;
     settings.elementEdges = true;
-    settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
+    settings.edgeColour = {1.0f, 0.0f, 1.0f, 1.0f};
     renderer.render(camera, settings, width, height);
     const Image image = renderer.readDisplay();
     size_t magenta = 0;
@@ -243,7 +243,7 @@ TEST_F(MeshRendererTest, ElementEdgesBehindASurfaceAreHidden) {
   renderer.setMesh(scene);
   RenderSettings settings;
   settings.elementEdges = true;
-  settings.edgeColor = {1.0f, 0.0f, 1.0f, 1.0f};
+  settings.edgeColour = {1.0f, 0.0f, 1.0f, 1.0f};
   renderer.render(camera, settings, width, height);
   const Image image = renderer.readDisplay();
   const LinearImage linear = renderer.readLinear();
