@@ -4,6 +4,7 @@
 #include "core/strings.h"
 #include "gl/method_pieces.h"
 #include "gl/patch_vertices.h"
+#include "gl/vertex_arrays.h"
 #include "mesh/display_mesh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -53,38 +54,8 @@ GlObject linearTexture(const LinearImage& image, const std::string& source) {
 
 }  // namespace
 
-namespace {
-
-// A vertex array reading one buffer of `stride`-byte vertices, and the buffer.
-void createVertexArray(GlObject& vao, GlObject& vbo, GLsizei stride) {
-  vao = GlObject(GlKind::VertexArray);
-  vbo = GlObject(GlKind::Buffer);
-  glVertexArrayVertexBuffer(vao, 0, vbo, 0, stride);
-}
-
-// Float attribute `index` of `components` at byte `offset` in each vertex.
-void floatAttribute(GLuint vao, GLuint index, GLint components, size_t offset) {
-  glEnableVertexArrayAttrib(vao, index);
-  glVertexArrayAttribFormat(vao, index, components, GL_FLOAT, GL_FALSE, GLuint(offset));
-  glVertexArrayAttribBinding(vao, index, 0);
-}
-
-// A vertex array of DisplayVertex triangles, and its buffer.
-void createDisplayVertexArray(GlObject& vao, GlObject& vbo) {
-  createVertexArray(vao, vbo, sizeof(DisplayVertex));
-  floatAttribute(vao, 0, 3, offsetof(DisplayVertex, position));
-  floatAttribute(vao, 1, 3, offsetof(DisplayVertex, B));
-  floatAttribute(vao, 2, 3, offsetof(DisplayVertex, Bflat));
-  glEnableVertexArrayAttrib(vao, 3);
-  glVertexArrayAttribIFormat(vao, 3, 1, GL_UNSIGNED_INT, offsetof(DisplayVertex, element));
-  glVertexArrayAttribBinding(vao, 3, 0);
-}
-
-}  // namespace
-
 MeshRenderer::MeshRenderer() {
   createDisplayVertexArray(meshVao_, meshVbo_);
-  createDisplayVertexArray(serendipityVao_, serendipityVbo_);
 
   createVertexArray(edgeVao_, edgeVbo_, sizeof(glm::vec3));
   floatAttribute(edgeVao_, 0, 3, 0);
@@ -96,10 +67,6 @@ MeshRenderer::MeshRenderer() {
   floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
   floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, colour));
 
-  polygonCorners_ = GlObject(GlKind::Buffer);
-  polygonOffsets_ = GlObject(GlKind::Buffer);
-  polygonCornerTexels_ = GlObject(GlKind::TextureBuffer);
-  polygonOffsetTexels_ = GlObject(GlKind::TextureBuffer);
   emptyVao_ = GlObject(GlKind::VertexArray);
   for (GlObject& query : timerQueries_) query = GlObject(GlKind::TimerQuery);
 }
@@ -121,14 +88,7 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   tVertexMarkers_ = static_cast<GLsizei>(display.tVertices.size());
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
   edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
-  std::vector<DisplayVertex> serendipity;
-  for (const DisplayVertex& v : display.triangles)
-    if (isSerendipityQuad(*prepared.drawn, v.element)) serendipity.push_back(v);
-  storage_.upload(serendipityVbo_, serendipity.data(), serendipity.size() * sizeof(DisplayVertex));
-  serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
-  storage_.clear(polygonCorners_);  // uploaded when first drawn
-  storage_.clear(polygonOffsets_);
-  polygonsUploaded_ = false;
+  polygons_.setMesh(prepared.drawn, display.triangles);
   original_ = std::move(prepared.original);
   mesh_ = std::move(prepared.drawn);
   topology_ = std::move(prepared.topology);
@@ -242,10 +202,10 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
       drawTriangles(method, settings.perspectiveCorrect, clipFromWorld, triangleVertices_);
       break;
     case GpuPass::ScanlinePolygons:
-      drawPolygons(PolygonMode::Scanline, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      polygons_.draw(PolygonPass::Mode::Scanline, meshVao_, triangleVertices_, clipFromWorld, width, height);
       break;
     case GpuPass::BilinearPolygons:
-      drawPolygons(PolygonMode::Bilinear, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      polygons_.draw(PolygonPass::Mode::Bilinear, meshVao_, triangleVertices_, clipFromWorld, width, height);
       break;
     case GpuPass::LagrangePieces:
       if (isQuadraticPerPixel(method, evaluation))
@@ -275,14 +235,14 @@ void MeshRenderer::drawTriangles(Method method, bool perspectiveCorrect, const g
 
 // Linear elements are linear under the quadratic method too: Gouraud's triangles,
 // perspective-correct; then the 6-node triangles' pieces and the serendipity quads.
-void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld,
-                                         int width, int height, bool comparison) {
+void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width,
+                                         int height, bool comparison) {
   drawTriangles(Method::Gouraud, true, clipFromWorld, linearForQuadraticVertices_);
   BezierPass& pass = comparison && patchesFor_ != kQuadraticTrianglesKey ? comparisonPass_ : bezierPass_;
   if (!pass.vertices().empty()) pass.draw(clipFromWorld, evaluation);
-  if (serendipityVertices_ > 0)
-    drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
-  const size_t pieces = size_t(linearForQuadraticVertices_ + serendipityVertices_) / 3 + pass.vertices().size() / 3;
+  polygons_.drawSerendipity(clipFromWorld, width, height);
+  const size_t pieces =
+      size_t(linearForQuadraticVertices_ + polygons_.serendipityVertices()) / 3 + pass.vertices().size() / 3;
   statistics_ = {pieces, 3, 1.0, pieces};
 }
 
@@ -304,65 +264,10 @@ void MeshRenderer::drawTessellated(Method method, const RenderSettings& settings
   // Serendipity quads are exact per pixel in the polygon pass; the radiosity surface draws
   // them from their (linear) pieces, which it can lift.
   const bool serendipityPass = methodInfo(method).gpu == GpuPass::LagrangePieces && evaluation.surfaceHeight == 0.0;
-  if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(serendipityVertices_ / 3);
+  if (serendipityPass) evaluation.pieces = pass.vertices().size() / 3 - size_t(polygons_.serendipityVertices() / 3);
   pass.draw(clipFromWorld, evaluation);
   statistics_ = pass.statistics();
-  if (serendipityPass && serendipityVertices_ > 0)
-    drawPolygons(PolygonMode::Serendipity, serendipityVao_, serendipityVertices_, clipFromWorld, width, height);
-}
-
-void MeshRenderer::uploadPolygons() {
-  // Element polygons (corners) for the scanline, bilinear and serendipity passes, read as
-  // buffer textures: per corner three texels, position, B, and the B of the mid-edge node
-  // after it (serendipity quads only); offsets[e] .. offsets[e+1] are element e's.
-  std::vector<glm::vec4> corners;
-  std::vector<uint32_t> offsets{0};
-  offsets.reserve(mesh_->elements.size() + 1);
-  largePolygons_ = false;
-  for (size_t e = 0; e < mesh_->elements.size(); ++e) {
-    const Element& element = mesh_->elements[e];
-    const bool quad = isSerendipityQuad(*mesh_, e);
-    largePolygons_ = largePolygons_ || element.corners.size() > 4;
-    for (size_t k = 0; k < element.corners.size(); ++k) {
-      const Node& node = mesh_->nodes[element.corners[k]];
-      corners.push_back(glm::vec4(glm::vec3(node.position), 1.0f));
-      corners.push_back(glm::vec4(glm::vec3(node.B), 1.0f));
-      corners.push_back(quad ? glm::vec4(glm::vec3(mesh_->nodes[element.midEdge[k]].B), 1.0f) : glm::vec4(0.0f));
-    }
-    offsets.push_back(uint32_t(corners.size() / 3));
-  }
-  GLint maxTexels = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  if (corners.size() > size_t(maxTexels))
-    throw Error("element polygons: " + std::to_string(corners.size() / 3) + " corners need " +
-                std::to_string(corners.size()) + " texels, more than this OpenGL's buffer textures hold (" +
-                std::to_string(maxTexels) + ", GL_MAX_TEXTURE_BUFFER_SIZE)");
-  storage_.upload(polygonCorners_, corners.data(), corners.size() * sizeof(glm::vec4));
-  storage_.upload(polygonOffsets_, offsets.data(), offsets.size() * sizeof(uint32_t));
-  glTextureBuffer(polygonCornerTexels_, GL_RGBA32F, polygonCorners_);
-  glTextureBuffer(polygonOffsetTexels_, GL_R32UI, polygonOffsets_);
-  polygonsUploaded_ = true;
-}
-
-void MeshRenderer::drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld,
-                                int width, int height) {
-  if (!polygonsUploaded_) uploadPolygons();
-  // A vertex reads its element's corners once where a pixel would read them for every covered
-  // pixel: fewer reads while the draw has fewer vertices than the image has pixels, more beyond
-  // (radview_scale_bench times both sides of the switch).
-  const bool perVertex = mode != PolygonMode::Serendipity && int64_t(vertices) < int64_t(width) * height;
-  const ShaderProgram& program = mode == PolygonMode::Scanline && largePolygons_ ? largePolygonScanline_[perVertex]
-                                 : perVertex                                     ? polygonProgramsPerVertex_[int(mode)]
-                                                                                 : polygonPrograms_[int(mode)];
-  program.set("clipFromWorld", clipFromWorld);
-  program.set("viewportSize", glm::vec2(width, height));
-  program.use();
-  glBindTextureUnit(2, polygonCornerTexels_);
-  glBindTextureUnit(3, polygonOffsetTexels_);
-  glBindVertexArray(vao);
-  glDrawArrays(GL_TRIANGLES, 0, vertices);
-  glBindTextureUnit(2, 0);
-  glBindTextureUnit(3, 0);
+  if (serendipityPass) polygons_.drawSerendipity(clipFromWorld, width, height);
 }
 
 void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& requested, int width, int height) {
@@ -566,11 +471,13 @@ void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& ca
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  if (settings.elementEdges && edgeVertices_ > 0) drawLines(edgeVao_, edgeVertices_, settings.edgeColour, clipFromWorld);
+  if (settings.elementEdges && edgeVertices_ > 0)
+    drawLines(edgeVao_, edgeVertices_, settings.edgeColour, clipFromWorld);
   if (bezierMethod) {
     if (settings.tessellationTriangles)
       bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColour);
-    if (settings.splitLines && splitVertices_ > 0) drawLines(splitVao_, splitVertices_, kSplitLineColour, clipFromWorld);
+    if (settings.splitLines && splitVertices_ > 0)
+      drawLines(splitVao_, splitVertices_, kSplitLineColour, clipFromWorld);
     if (drawNet && netVertices_ > 0) drawLines(netVao_, netVertices_, kControlNetColour, clipFromWorld);
   }
   if (markers) {

@@ -11,6 +11,7 @@
 #include "gl/deferred_pass.h"
 #include "gl/display_views.h"
 #include "gl/gl_object.h"
+#include "gl/polygon_pass.h"
 #include "gl/prepared_mesh.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
@@ -128,37 +129,10 @@ class MeshRenderer {
   ShaderProgram toneMapProgram_{{"fullscreen.vert", "tonemap.frag"}};
   ShaderProgram falseColourProgram_{{"fullscreen.vert", "false_colour.frag"}};
   ShaderProgram linesProgram_{{"lines.vert", "lines.frag"}};
-  // What polygon.frag evaluates per pixel from an element's polygon (its MODE_ macros).
-  enum class PolygonMode : int { Scanline = 0, Bilinear = 1, Serendipity = 2 };
-  // Each mode reading the element's corners per pixel; and scanline and bilinear reading a
-  // triangle's or quad's per vertex, as flat outputs (CORNERS_PER_VERTEX; drawPolygons picks).
-  // Scanline Gouraud also for meshes with larger polygons (LARGE_POLYGONS, polygon.frag).
-  static ShaderProgram polygonProgram(const char* mode, bool cornersPerVertex, bool largePolygons = false) {
-    return ShaderProgram(
-        {"polygon.vert", "polygon.frag"},
-        {std::string("MODE ") + mode, std::string("CORNERS_PER_VERTEX ") + (cornersPerVertex ? "1" : "0"),
-         std::string("LARGE_POLYGONS ") + (largePolygons ? "1" : "0")});
-  }
-  ShaderProgram polygonPrograms_[3] = {polygonProgram("MODE_SCANLINE", false), polygonProgram("MODE_BILINEAR", false),
-                                       polygonProgram("MODE_SERENDIPITY", false)};
-  ShaderProgram polygonProgramsPerVertex_[2] = {polygonProgram("MODE_SCANLINE", true),
-                                                polygonProgram("MODE_BILINEAR", true)};
-  ShaderProgram largePolygonScanline_[2] = {polygonProgram("MODE_SCANLINE", false, true),
-                                            polygonProgram("MODE_SCANLINE", true, true)};  // [per vertex]
+  PolygonPass polygons_{storage_};  // scanline Gouraud, bilinear, serendipity quads
   ShaderProgram overlayProgram_{{"overlay.vert", "overlay.frag"}};
   GlObject overlayVao_, overlayVbo_;
   GLsizei discontinuityVertices_ = 0, tVertexMarkers_ = 0;  // in overlayVbo_: the edges, then the markers
-  GlObject polygonCorners_, polygonOffsets_;                // element polygons (lib/polygon_corners.glsl)
-  GlObject polygonCornerTexels_, polygonOffsetTexels_;      // the shaders read them as buffer textures
-  bool polygonsUploaded_ = false;                           // only the methods that draw polygons need them
-  bool largePolygons_ = false;                              // any element of more than four corners
-  void uploadPolygons();
-  // The triangles of the serendipity quads (quadratic method), for their own polygon pass.
-  GlObject serendipityVao_, serendipityVbo_;
-  GLsizei serendipityVertices_ = 0;
-  // Element polygons per pixel from the storage buffers, over the DisplayVertex triangles in `vao`.
-  void drawPolygons(PolygonMode mode, GLuint vao, GLsizei vertices, const glm::mat4& clipFromWorld, int width,
-                    int height);
   GlObject meshVao_, meshVbo_, edgeVao_, edgeVbo_, emptyVao_;
   GLsizei triangleVertices_ = 0, edgeVertices_ = 0;
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
@@ -176,10 +150,10 @@ class MeshRenderer {
   static bool isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation);
   // drawRadiosity's passes, one per way a method is drawn (MethodInfo::gpu).
   void drawTriangles(Method method, bool perspectiveCorrect, const glm::mat4& clipFromWorld, GLsizei vertices);
-  void drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width,
-                             int height, bool comparison);
-  void drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld,
-                    GLuint framebuffer, bool comparison, bool depthOnly);
+  void drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width, int height,
+                             bool comparison);
+  void drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld, GLuint framebuffer,
+                    bool comparison, bool depthOnly);
   void drawTessellated(Method method, const RenderSettings& settings, BezierEvaluation evaluation,
                        const glm::mat4& clipFromWorld, int width, int height);
   static constexpr int kQuadraticTrianglesKey = 1 << 20;  // a Bezier pass's key: beyond every piecesKey
