@@ -243,9 +243,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
       "--truth", o.truth,
       "Measure against this linear image (OpenEXR or another float format, the bench's size) instead "
       "of the gather: an analytic answer, a path tracer's render of the view; exact errors, no interval");
-  command->add_option("--gather-interpolant", o.gatherInterpolant, "The reference's B^ under eq. 9.9's integral")
-      ->check(methodChoice(methodNames(true)))
-      ->capture_default_str();
+  addGatherMethodOption(*command, o.gatherMethod, "The method of the reference's B^ under eq. 9.9's integral");
   command->add_option("--frames", o.frames, "Timed frames per row (the median is reported)")
       ->check(CLI::Range(1, kMaxBenchFrames))
       ->capture_default_str();
@@ -405,7 +403,7 @@ int runBench(const BenchOptions& options) {
   } else {
     const bool pathTrace = referenceTracer(options) == RayTracer::PathTrace;
     GatherSettings gather;
-    gather.interpolant = methodFromName(options.gatherInterpolant);
+    gather.interpolant = methodFromName(options.gatherMethod);
     gather.width = width;
     gather.height = height;
     gather.camera = camera;
@@ -432,7 +430,7 @@ int runBench(const BenchOptions& options) {
     writePng(magnitudeMap(width, height, reference.pixels(), reference.pixelNoiseSteps(), kNoiseMapSteps),
              options.outDir + "/reference-noise.png");
     header << (pathTrace ? std::string("Reference: the path tracer's true image (no solution used)")
-                         : "Reference: final gather (C&W eq. 9.9, B^ " + options.gatherInterpolant + ")")
+                         : "Reference: final gather (C&W eq. 9.9, B^ " + options.gatherMethod + ")")
            << " at each pixel's centre, " << spp << " spp in " << options.runs << " independent runs, "
            << number(seconds) << " s; its noise (RMS, over the compared pixels) " << number(reference.noiseLinear())
            << " linear, " << number(reference.noiseSteps()) << " display steps (reference-noise.png: white 0, red "
@@ -456,7 +454,7 @@ int runBench(const BenchOptions& options) {
       writeLinearImage(image, options.outDir + "/" + measured.row.image);
       measured.values = reference.rowValues(image);
       rows.push_back(std::move(measured));
-      header << "The final-gather row: eq. 9.9 over the solution (B^ " << options.gatherInterpolant << ") at "
+      header << "The final-gather row: eq. 9.9 over the solution (B^ " << options.gatherMethod << ") at "
              << options.gatherRowSpp << " spp (--gather-spp); its time is the CPU's to those samples on all cores, "
              << "not a GPU frame, and its error includes its own noise.\n";
     }

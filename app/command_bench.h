@@ -24,11 +24,11 @@ struct BenchOptions {
   double precision = 0.0;   // add passes until every row's interval half-width is below this (steps); 0: --spp
   double maxSeconds = 0.0;  // with --precision: stop adding passes after this long; 0: no limit
   int nodeSpp = 256;        // the reference at the nodes, for the error split (nodal_reference.h); 0: none
-  std::string gatherInterpolant = "clough-tocher";  // B^ under the reference's integral
-  int frames = 7;                                   // timed frames per row (median)
-  double rowSeconds = 3.0;                          // a row's timing stops after this, once 3 frames are in
-  std::string levels = "1,2,4,8,16,32,64";          // tessellation levels of the quadratic and C1 methods
-  std::string tolerances = "0.5,2";                 // adaptive tessellation tolerances, 8-bit steps
+  std::string gatherMethod = "clough-tocher";  // B^ under the reference's integral
+  int frames = 7;                              // timed frames per row (median)
+  double rowSeconds = 3.0;                     // a row's timing stops after this, once 3 frames are in
+  std::string levels = "1,2,4,8,16,32,64";     // tessellation levels of the quadratic and C1 methods
+  std::string tolerances = "0.5,2";            // adaptive tessellation tolerances, 8-bit steps
   // Fixed levels whose triangles would outnumber the image's pixels this many times are not
   // measured (0: every level is).
   double maxTrianglesPerPixel = 16.0;

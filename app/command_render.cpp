@@ -117,7 +117,7 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
 int runRender(const RenderOptions& options) {
   const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
   const std::string& given = options.gather.givenWithGlMethod;
-  const bool gatherOnly = given == "--gather-interpolant" || given == "--emitter-samples";
+  const bool gatherOnly = given == "--gather-method" || given == "--gather-interpolant" || given == "--emitter-samples";
   if (!given.empty() && (gatherOnly ? tracer != RayTracer::FinalGather : !tracer)) {
     std::vector<std::string> takers;
     for (const RayTracerInfo& info : rayTracerRegistry())

@@ -124,12 +124,9 @@ void addGatherOptions(CLI::App& command, GatherOptions& g, const std::string& sp
       ->capture_default_str();
   command.add_option("--seed", g.seed, "final-gather, path-trace: random seed (same seed, same image)")
       ->capture_default_str();
-  command
-      .add_option("--gather-interpolant", g.interpolant,
-                  "final-gather: the interpolant that reconstructs B^ under the integral of eq. 9.9 (one that "
-                  "needs no view)")
-      ->check(methodChoice(methodNames(true)))
-      ->capture_default_str();
+  addGatherMethodOption(command, g.interpolant,
+                        "final-gather: the method that reconstructs B^ under the integral of eq. 9.9 (one that "
+                        "needs no view)");
   command
       .add_option(
           "--emitter-samples", g.emitterSamples,
@@ -251,7 +248,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   viewer.framesWaitForSpp = app.count("--spp") > 0;
   // The final gather's own options first, so that one of them is named where it is misplaced.
-  for (const char* name : {"--gather-interpolant", "--emitter-samples", "--spp", "--seed"})
+  for (const char* name : {"--gather-method", "--gather-interpolant", "--emitter-samples", "--spp", "--seed"})
     if (render.gather.givenWithGlMethod.empty() && renderCommand->count(name) > 0)
       render.gather.givenWithGlMethod = name;
   try {

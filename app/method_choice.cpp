@@ -31,4 +31,16 @@ std::string methodHelp(bool viewIndependentOnly) {
   return help;
 }
 
+void addGatherMethodOption(CLI::App& command, std::string& method, const std::string& help) {
+  command.add_option("--gather-method", method, help)->check(methodChoice(methodNames(true)))->capture_default_str();
+  command.add_option("--gather-interpolant", method)
+      ->check(methodChoice(methodNames(true)))
+      ->each([](const std::string&) {  // kept for older scripts
+        std::fprintf(stderr,
+                     "radview: note: --gather-interpolant is the older name of --gather-method, which "
+                     "radview uses\n");
+      })
+      ->group("");
+}
+
 }  // namespace radview

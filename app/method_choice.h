@@ -16,4 +16,9 @@ CLI::Validator methodChoice(const std::vector<std::string>& names);
 // `viewIndependentOnly`): its name and summary, for an option's help text.
 std::string methodHelp(bool viewIndependentOnly = false);
 
+// --gather-method: the method that reconstructs B^ under the final gather's integral (eq. 9.9),
+// one that needs no view, into `method`; and --gather-interpolant, its older name, hidden, with a
+// note. `help` is the option's help text.
+void addGatherMethodOption(CLI::App& command, std::string& method, const std::string& help);
+
 }  // namespace radview

@@ -86,7 +86,7 @@ void drawGatherControls(ViewerState& state) {
   section(g.pathTrace ? "Path tracer (the true image)" : "Final gather (C&W 9.3.1, eq. 9.9)");
   ImGui::PushItemWidth(200);
   if (!g.pathTrace) {
-    methodCombo("B^ interpolant", g.interpolant, true);
+    methodCombo("B^ method", g.interpolant, true);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Reconstructs the solution under the integral (the CPU interpolant, as radview sample)");
     ImGui::SliderInt("Shadow rays per pass", &g.emitterSamples, 1, 16);

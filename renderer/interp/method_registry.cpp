@@ -66,7 +66,7 @@ const std::vector<MethodInfo>& methodRegistry() {
 const std::vector<RayTracerInfo>& rayTracerRegistry() {
   static const std::vector<RayTracerInfo> registry = {
       {RayTracer::FinalGather, "final-gather", "Final gather", "final gather", '9', "C&W §9.3.1, eq. 9.9",
-       "per pixel by ray casting over the solution, --gather-interpolant under the integral", true},
+       "per pixel by ray casting over the solution, --gather-method under the integral", true},
       {RayTracer::PathTrace, "path-trace", "Path traced", "path tracer", '0', "C&W eq. 2.54, the radiosity equation",
        "the true image by path tracing (no solution used): what every method converges to", false},
   };
