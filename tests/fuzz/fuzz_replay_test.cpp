@@ -5,6 +5,7 @@
 #include "mesh/topology.h"
 #include "tests/fuzz/fuzz_inputs.h"
 #include "tests/fuzz/mesh_bytes.h"
+#include "tests/shared_corpus.h"
 
 #include <gtest/gtest.h>
 
@@ -69,9 +70,9 @@ TEST(FuzzRegressions, EveryKeptInputHasItsRecordedOutcome) {
 
 // The importer target's seeds include the shared corpus; its files must take the same way
 // through the target as through loadFile.
-TEST(FuzzSeeds, OtherToolsMeshesTakeTheImporterTarget) {
+TEST(SharedCorpusFuzzSeeds, OtherToolsMeshesTakeTheImporterTarget) {
   const fs::path corpus = kSource / "../shared/corpus/mesh-colours";
-  if (!fs::is_directory(corpus)) GTEST_SKIP() << "no corpus at " << corpus;
+  RADVIEW_REQUIRE_SHARED_CORPUS(corpus);
   for (const char* name : {"trimesh_quadknot.obj", "draco_test_pos_color_big_endian.ply", "trimesh_reference.ply"}) {
     SCOPED_TRACE(name);
     const std::vector<uint8_t> bytes = readBytes(corpus / name);

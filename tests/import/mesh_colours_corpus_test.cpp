@@ -4,6 +4,7 @@
 #include "import/load_file.h"
 
 #include "core/error.h"
+#include "tests/shared_corpus.h"
 
 #include <gtest/gtest.h>
 
@@ -48,10 +49,9 @@ const std::map<std::string, Expected> kExpected = {
     {"trimesh_reference.obj", {845, 1610, 0, ""}},
 };
 
-TEST(MeshColoursCorpus, EveryFileOpensOrIsRefusedWithItsReason) {
+TEST(SharedCorpusMeshColours, EveryFileOpensOrIsRefusedWithItsReason) {
   const fs::path root = RADVIEW_MESH_CORPUS_DIR;
-  if (!fs::is_directory(root))
-    GTEST_SKIP() << "no corpus at " << root << " (it lives in ../shared beside the checkout)";
+  RADVIEW_REQUIRE_SHARED_CORPUS(root);
   size_t seen = 0;
   for (const auto& entry : fs::directory_iterator(root)) {
     const std::string name = entry.path().filename().string();
@@ -84,9 +84,9 @@ TEST(MeshColoursCorpus, EveryFileOpensOrIsRefusedWithItsReason) {
 
 // The solver's output holds 104 vertices at exactly 1 1 1 (the light): as floats they are
 // linear radiosity 1, the brightest nodes of the mesh.
-TEST(MeshColoursCorpus, RadiositySolverOutputKeepsItsValues) {
+TEST(SharedCorpusMeshColours, RadiositySolverOutputKeepsItsValues) {
   const fs::path file = fs::path(RADVIEW_MESH_CORPUS_DIR) / "cornellbox_cornell_radiosity.obj";
-  if (!fs::exists(file)) GTEST_SKIP() << "no corpus file " << file;
+  RADVIEW_REQUIRE_SHARED_CORPUS(file);
   const LoadedFile loaded = loadFile(file.string());
   size_t white = 0;
   double brightest = 0.0;

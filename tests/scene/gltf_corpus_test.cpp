@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "scene/gltf_document.h"
+#include "tests/shared_corpus.h"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>
@@ -100,9 +101,9 @@ const char* name(Outcome o) {
   return "?";
 }
 
-TEST(GltfCorpus, EveryModelLoadsOrIsRefusedClearly) {
+TEST(SharedCorpusGltf, EveryModelLoadsOrIsRefusedClearly) {
   const fs::path root = RADVIEW_CORPUS_DIR;
-  if (!fs::is_directory(root)) GTEST_SKIP() << "no glTF corpus at " << root;
+  RADVIEW_REQUIRE_SHARED_CORPUS(root);
   std::map<std::string, std::map<Outcome, int>> counts;  // "valid" / "invalid" -> outcome -> files
   std::map<std::string, int> readerRefused;              // "valid" / "invalid" -> files
   for (const std::string& file : modelFiles(root)) {
