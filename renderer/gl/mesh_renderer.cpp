@@ -2,7 +2,7 @@
 
 #include "core/error.h"
 #include "core/strings.h"
-#include "gl/method_pieces.h"
+#include "gl/image_transfer.h"
 #include "gl/patch_vertices.h"
 #include "gl/vertex_arrays.h"
 #include "mesh/display_mesh.h"
@@ -11,65 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 
 namespace radview::gl {
 
-namespace {
-
-// RGBA pixels of a framebuffer's colour buffer, top row first (OpenGL reads bottom-up).
-template <typename T>
-std::vector<T> readPixels(GLuint framebuffer, GLenum colourBuffer, int width, int height, GLenum type) {
-  std::vector<T> pixels(size_t(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
-  glReadBuffer(colourBuffer);
-  glReadPixels(0, 0, width, height, GL_RGBA, type, pixels.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  std::vector<T> rows(pixels.size());
-  const size_t row = size_t(width) * 4;
-  for (int y = 0; y < height; ++y) std::copy_n(&pixels[size_t(height - 1 - y) * row], row, &rows[size_t(y) * row]);
-  return rows;
-}
-
-// A texture of a linear image (RGBA32F, nearest texel), its rows turned bottom-up as OpenGL's
-// run. Throws Error naming `source` for a size this OpenGL cannot hold.
-GlObject linearTexture(const LinearImage& image, const std::string& source) {
-  GLint maxSize = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
-  if (image.width < 1 || image.height < 1 || image.width > maxSize || image.height > maxSize)
-    throw Error(source, "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-                            ", outside this OpenGL's 1.." + std::to_string(maxSize));
-  std::vector<float> rows(image.rgba.size());
-  const size_t row = size_t(image.width) * 4;
-  for (int y = 0; y < image.height; ++y)
-    std::copy_n(&image.rgba[size_t(image.height - 1 - y) * row], row, &rows[size_t(y) * row]);
-  GlObject texture(GlKind::Texture2D);
-  glTextureStorage2D(texture, 1, GL_RGBA32F, image.width, image.height);
-  glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureSubImage2D(texture, 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT, rows.data());
-  return texture;
-}
-
-}  // namespace
-
-MeshRenderer::MeshRenderer() {
-  createDisplayVertexArray(meshVao_, meshVbo_);
-
-  createVertexArray(edgeVao_, edgeVbo_, sizeof(glm::vec3));
-  floatAttribute(edgeVao_, 0, 3, 0);
-  createVertexArray(splitVao_, splitVbo_, sizeof(glm::vec3));
-  floatAttribute(splitVao_, 0, 3, 0);
-  createVertexArray(netVao_, netVbo_, sizeof(glm::vec3));
-  floatAttribute(netVao_, 0, 3, 0);
-  createVertexArray(overlayVao_, overlayVbo_, sizeof(OverlayVertex));
-  floatAttribute(overlayVao_, 0, 3, offsetof(OverlayVertex, position));
-  floatAttribute(overlayVao_, 1, 4, offsetof(OverlayVertex, colour));
-
-  emptyVao_ = GlObject(GlKind::VertexArray);
-  for (GlObject& query : timerQueries_) query = GlObject(GlKind::TimerQuery);
-}
+MeshRenderer::MeshRenderer() { createDisplayVertexArray(meshVao_, meshVbo_); }
 
 MeshRenderer::~MeshRenderer() = default;
 
@@ -80,14 +25,8 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   const DisplayMesh& display = prepared.display;
   storage_.upload(meshVbo_, display.triangles.data(), display.triangles.size() * sizeof(DisplayVertex));
-  storage_.upload(edgeVbo_, display.elementEdges.data(), display.elementEdges.size() * sizeof(glm::vec3));
-  std::vector<OverlayVertex> overlay = display.discontinuityEdges;
-  overlay.insert(overlay.end(), display.tVertices.begin(), display.tVertices.end());
-  glNamedBufferData(overlayVbo_, overlay.size() * sizeof(OverlayVertex), overlay.data(), GL_STATIC_DRAW);
-  discontinuityVertices_ = static_cast<GLsizei>(display.discontinuityEdges.size());
-  tVertexMarkers_ = static_cast<GLsizei>(display.tVertices.size());
   triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
-  edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+  overlays_.setMesh(display);
   polygons_.setMesh(prepared.drawn, display.triangles);
   original_ = std::move(prepared.original);
   mesh_ = std::move(prepared.drawn);
@@ -96,14 +35,9 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   brightestLuminance_ = prepared.brightestLuminance;
   repairedDrawn_ = prepared.repairedTVertices;
   linearForQuadraticVertices_ = GLsizei(prepared.linearForQuadraticVertices);
-  patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = -1;
+  patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = std::nullopt;
+  netFor_ = std::nullopt;
 }
-
-namespace {
-
-int piecesKey(Method method, CloughTocherVariant variant) { return int(method) * 2 + int(variant); }
-
-}  // namespace
 
 bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation) {
   return resolvesDeferred(methodInfo(method).gpu) && evaluation.tessellation == 0;
@@ -116,7 +50,8 @@ bool MeshRenderer::isQuadraticPerPixel(Method method, const BezierEvaluation& ev
 void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEvaluation& evaluation) {
   const bool deferred = isDeferred(settings.method, evaluation);
   const bool quadraticTriangles = isQuadraticPerPixel(settings.method, evaluation);
-  const int wanted = quadraticTriangles ? kQuadraticTrianglesKey : piecesKey(settings.method, settings.cloughTocher);
+  const PiecesKey wanted =
+      quadraticTriangles ? PiecesKey::quadraticTriangles() : PiecesKey{settings.method, settings.cloughTocher};
   if ((deferred ? deferredFor_ : patchesFor_) == wanted && (!settings.splitLines || splitFor_ == wanted)) return;
   if (deferred) {
     adoptPieces(prepareDeferred(mesh_, topology_, settings.method, settings.cloughTocher), settings.splitLines);
@@ -125,19 +60,19 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEva
   // One of the two passes holds the method's pieces at a time, the other's freed first: memory
   // stays what the view needs.
   deferred_.clear();
-  deferredFor_ = -1;
+  deferredFor_ = std::nullopt;
   std::vector<glm::vec3> split;
   bezierPass_.upload(quadraticTriangles ? quadraticTriangleVertices(*mesh_)
                                         : pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
                                                         settings.splitLines ? &split : nullptr),
                      pieceDegree(methodInfo(settings.method).gpu));
   patchesFor_ = wanted;
-  uploadSplit(split, settings.splitLines ? wanted : -1);
+  uploadSplit(split, settings.splitLines ? std::optional(wanted) : std::nullopt);
 }
 
 std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& settings) const {
   const bool flatSurface = settings.surfaceHeight == 0.0 || settings.view == DisplayView::Difference;
-  const int key = piecesKey(settings.method, settings.cloughTocher);
+  const PiecesKey key{settings.method, settings.cloughTocher};
   const bool built = deferredFor_ == key && (!settings.splitLines || splitFor_ == key);
   if (built || hasShownImage() || settings.repairTVertices != repairedDrawn_ || settings.tessellation != 0 ||
       !flatSurface || !resolvesDeferred(methodInfo(settings.method).gpu))
@@ -150,26 +85,23 @@ std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& s
 void MeshRenderer::adoptPieces(const DeferredSetup& setup, bool splitLines) {
   if (setup.mesh != mesh_) return;
   bezierPass_.upload({}, 3);
-  patchesFor_ = -1;
+  patchesFor_ = std::nullopt;
   std::vector<glm::vec3> split;
   uploadDeferred(setup, deferred_, splitLines ? &split : nullptr);
-  const int key = piecesKey(setup.method, setup.variant);
-  deferredFor_ = key;
-  uploadSplit(split, splitLines ? key : -1);
+  deferredFor_ = setup.key();
+  uploadSplit(split, splitLines ? deferredFor_ : std::nullopt);
 }
 
-void MeshRenderer::uploadSplit(const std::vector<glm::vec3>& split, int key) {
-  glNamedBufferData(splitVbo_, split.size() * sizeof(glm::vec3), split.data(), GL_STATIC_DRAW);
-  splitVertices_ = static_cast<GLsizei>(split.size());
+void MeshRenderer::uploadSplit(const std::vector<glm::vec3>& split, std::optional<PiecesKey> key) {
+  overlays_.setSplitLines(split);
   splitFor_ = key;
 }
 
 void MeshRenderer::uploadControlNet(double heightScale) {
-  if (netFor_[0] == patchesFor_ && netFor_[1] == heightScale) return;
-  const std::vector<glm::vec3> net = controlNetLines(bezierPass_.vertices(), bezierPass_.degree(), heightScale);
-  glNamedBufferData(netVbo_, net.size() * sizeof(glm::vec3), net.data(), GL_STATIC_DRAW);
-  netVertices_ = static_cast<GLsizei>(net.size());
-  netFor_ = {double(patchesFor_), heightScale};
+  const ControlNetKey wanted{patchesFor_, heightScale};
+  if (netFor_ == wanted) return;
+  overlays_.setControlNet(controlNetLines(bezierPass_.vertices(), bezierPass_.degree(), heightScale));
+  netFor_ = wanted;
 }
 
 BezierEvaluation MeshRenderer::bezierEvaluation(const RenderSettings& settings, const Camera& camera) const {
@@ -238,7 +170,7 @@ void MeshRenderer::drawTriangles(Method method, bool perspectiveCorrect, const g
 void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width,
                                          int height, bool comparison) {
   drawTriangles(Method::Gouraud, true, clipFromWorld, linearForQuadraticVertices_);
-  BezierPass& pass = comparison && patchesFor_ != kQuadraticTrianglesKey ? comparisonPass_ : bezierPass_;
+  BezierPass& pass = comparison && patchesFor_ != PiecesKey::quadraticTriangles() ? comparisonPass_ : bezierPass_;
   if (!pass.vertices().empty()) pass.draw(clipFromWorld, evaluation);
   polygons_.drawSerendipity(clipFromWorld, width, height);
   const size_t pieces =
@@ -249,7 +181,7 @@ void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, con
 void MeshRenderer::drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld,
                                 GLuint framebuffer, bool comparison, bool depthOnly) {
   // The comparison shares the method's pieces when it is the same method per pixel.
-  const bool own = comparison && deferredFor_ != piecesKey(method, settings.cloughTocher);
+  const bool own = comparison && deferredFor_ != PiecesKey{method, settings.cloughTocher};
   DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
   if (depthOnly)
     pass.drawDepth(clipFromWorld);
@@ -297,7 +229,7 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   targets_.resize(width, height);
   // Everything that can throw (meshes, pieces) happens before any GL state is changed.
   const bool drawNet = uploadForFrame(settings, viewCamera, comparison.method);
-  beginTimer();
+  timer_.begin();
   // What the shaders call world is the mesh's frame (prepareMesh): world minus origin_. The
   // product is formed in double, so only coordinates of the scene's own size reach float.
   const glm::mat4 clipFromWorld(camera.clipFromWorld(double(width) / height) *
@@ -313,10 +245,12 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
     }
   } passStateReset;
   drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison.method);
-  drawDisplayPass(settings, comparison);
+  // Pass 2: the tone map or a false-colour view into the display target.
+  glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
+  display_.draw(settings, targets_.linearTexture(), comparison.method ? targets_.comparisonTexture() : 0);
+  if (settings.view == DisplayView::Difference) comparedWithImage_ = comparison.image;
   drawOverlays(settings, camera, clipFromWorld, width, height, drawNet);
-  glEndQuery(GL_TIME_ELAPSED);
-  ++frame_;
+  timer_.end();
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
@@ -333,42 +267,22 @@ bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& 
   // 6-node triangles in a Bezier pass of their own unless the method's holds them.
   if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces()) {
     if (isDeferred(settings.comparisonMethod, BezierEvaluation{})) {
-      const int key = piecesKey(settings.comparisonMethod, settings.cloughTocher);
+      const PiecesKey key{settings.comparisonMethod, settings.cloughTocher};
       if (key != deferredFor_ && key != comparisonDeferredFor_) {
         uploadDeferred(prepareDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher),
                        comparisonDeferred_, nullptr);
         comparisonDeferredFor_ = key;
       }
-    } else if (patchesFor_ != kQuadraticTrianglesKey && comparisonPatchesFor_ != kQuadraticTrianglesKey) {
+    } else if (patchesFor_ != PiecesKey::quadraticTriangles() &&
+               comparisonPatchesFor_ != PiecesKey::quadraticTriangles()) {
       comparisonPass_.upload(quadraticTriangleVertices(*mesh_), 2);
-      comparisonPatchesFor_ = kQuadraticTrianglesKey;
+      comparisonPatchesFor_ = PiecesKey::quadraticTriangles();
     }
   }
   const bool drawNet =
       settings.controlNet && settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces();
   if (drawNet) uploadControlNet(bezierEvaluation(settings, viewCamera).surfaceHeight);
   return drawNet;
-}
-
-void MeshRenderer::beginTimer() {
-  // Two queries in flight: the one begun two frames ago is read, so reading never stalls.
-  if (frame_ >= 2) {
-    GLint ready = 0;
-    glGetQueryObjectiv(timerQueries_[frame_ % 2], GL_QUERY_RESULT_AVAILABLE, &ready);
-    if (ready) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(timerQueries_[frame_ % 2], GL_QUERY_RESULT, &ns);
-      gpuFrameMs_ = ns * 1e-6;
-    }
-  }
-  glBeginQuery(GL_TIME_ELAPSED, timerQueries_[frame_ % 2]);
-}
-
-double MeshRenderer::lastFrameGpuMs() const {
-  if (frame_ == 0) throw Error("the GPU frame time was asked for before any frame was rendered");
-  GLuint64 ns = 0;
-  glGetQueryObjectui64v(timerQueries_[(frame_ - 1) % 2], GL_QUERY_RESULT, &ns);
-  return double(ns) * 1e-6;
 }
 
 void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camera& camera,
@@ -399,43 +313,7 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
   drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false, false);
-  if (hasShownImage())
-    glBlitNamedFramebuffer(shownFbo_, targets_.linearFramebuffer(), 0, 0, shownWidth_, shownHeight_, 0, 0, width,
-                           height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-}
-
-void MeshRenderer::drawDisplayPass(const RenderSettings& settings, const FrameComparison& comparison) {
-  // Pass 2: tone map into the display target.
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
-  glDisable(GL_DEPTH_TEST);
-  const ShaderProgram& display = settings.view == DisplayView::Normal ? toneMapProgram_ : falseColourProgram_;
-  display.set("exposureScale", static_cast<float>(std::exp2(settings.exposure)));
-  display.set("background", settings.background);
-  display.set("linearRadiosity", 0);
-  if (settings.view != DisplayView::Normal) {
-    display.set("view", static_cast<int>(settings.view));
-    display.set("gradientScale", float(settings.gradientScale));
-    display.set("isolineCount", settings.isolineCount);
-  }
-  if (settings.view == DisplayView::Difference) {
-    display.set("comparisonRadiosity", 1);
-    display.set("comparisonLinear", comparison.method || reference_.linear ? 1 : 0);
-    display.set("differenceScale", float(settings.differenceScale));
-    glBindTextureUnit(1, comparison.method ? targets_.comparisonTexture() : referenceTexture_);
-    comparedWithImage_ = comparison.image;
-  }
-  display.use();
-  glBindTextureUnit(0, targets_.linearTexture());
-  glBindVertexArray(emptyVao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-}
-
-void MeshRenderer::drawLines(GLuint vao, GLsizei vertices, const glm::vec4& colour, const glm::mat4& clipFromWorld) {
-  linesProgram_.set("clipFromWorld", clipFromWorld);
-  linesProgram_.set("colour", colour);
-  linesProgram_.use();
-  glBindVertexArray(vao);
-  glDrawArrays(GL_LINES, 0, vertices);
+  if (hasShownImage()) shown_.copyTo(targets_.linearFramebuffer(), width, height);
 }
 
 void MeshRenderer::drawOverlayDepth(const RenderSettings& settings, const Camera& camera,
@@ -461,83 +339,52 @@ void MeshRenderer::drawOverlayDepth(const RenderSettings& settings, const Camera
 void MeshRenderer::drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
                                 int width, int height, bool drawNet) {
   const bool bezierMethod = methodInfo(settings.method).bezierPieces();
-  const bool lines = (settings.elementEdges && edgeVertices_ > 0) ||
-                     (bezierMethod && (settings.tessellationTriangles || settings.splitLines || drawNet));
-  const bool markers =
-      (settings.discontinuityEdges && discontinuityVertices_ > 0) || (settings.tVertices && tVertexMarkers_ > 0);
-  if (!lines && !markers) return;
+  const OverlaySelection shown{settings.elementEdges,
+                               bezierMethod && settings.splitLines,
+                               drawNet,
+                               settings.discontinuityEdges,
+                               settings.tVertices,
+                               settings.edgeColour};
+  const bool tessellationTriangles = bezierMethod && settings.tessellationTriangles;
+  if (!overlays_.draws(shown) && !tessellationTriangles) return;
   drawOverlayDepth(settings, camera, clipFromWorld, width, height);
   // Depth-tested against the surfaces, drawn over what is at their depth, not writing depth.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_FALSE);
-  if (settings.elementEdges && edgeVertices_ > 0)
-    drawLines(edgeVao_, edgeVertices_, settings.edgeColour, clipFromWorld);
-  if (bezierMethod) {
-    if (settings.tessellationTriangles)
-      bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColour);
-    if (settings.splitLines && splitVertices_ > 0)
-      drawLines(splitVao_, splitVertices_, kSplitLineColour, clipFromWorld);
-    if (drawNet && netVertices_ > 0) drawLines(netVao_, netVertices_, kControlNetColour, clipFromWorld);
-  }
-  if (markers) {
-    glEnable(GL_PROGRAM_POINT_SIZE);
-    overlayProgram_.set("clipFromWorld", clipFromWorld);
-    overlayProgram_.set("pointSize", 7.0f);
-    overlayProgram_.use();
-    glBindVertexArray(overlayVao_);
-    // Wide lines are not in the core profile: the edges are one pixel, drawn over the element
-    // edges so their colour wins.
-    if (settings.discontinuityEdges) glDrawArrays(GL_LINES, 0, discontinuityVertices_);
-    if (settings.tVertices) glDrawArrays(GL_POINTS, discontinuityVertices_, tVertexMarkers_);
-    glDisable(GL_PROGRAM_POINT_SIZE);
-  }
+  overlays_.drawElementEdges(shown, clipFromWorld);
+  if (tessellationTriangles)
+    bezierPass_.drawTriangles(clipFromWorld, bezierEvaluation(settings, camera), kTessellationColour);
+  overlays_.drawPiecesAndMarkers(shown, clipFromWorld);
   glDepthMask(GL_TRUE);
 }
 
 Image MeshRenderer::readDisplay() const {
   return {targets_.width(), targets_.height(),
-          readPixels<uint8_t>(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(),
-                              GL_UNSIGNED_BYTE)};
+          readBytePixels(targets_.displayFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height())};
 }
 
-void MeshRenderer::setReferenceImage(const ReferenceImage& reference) {
-  referenceTexture_ = linearTexture(reference.pixels, reference.path);
-  reference_ = reference;
-}
+void MeshRenderer::setReferenceImage(const ReferenceImage& reference) { display_.setReferenceImage(reference); }
 
-void MeshRenderer::setShownImage(const LinearImage& image) {
-  GlObject texture = linearTexture(image, "the shown image");
-  clearShownImage();
-  shownTexture_ = std::move(texture);
-  shownFbo_ = GlObject(GlKind::Framebuffer);
-  glNamedFramebufferTexture(shownFbo_, GL_COLOR_ATTACHMENT0, shownTexture_, 0);
-  shownWidth_ = image.width;
-  shownHeight_ = image.height;
-}
+void MeshRenderer::setShownImage(const LinearImage& image) { shown_.set(image); }
 
-void MeshRenderer::clearShownImage() {
-  shownFbo_.reset();
-  shownTexture_.reset();
-  shownWidth_ = shownHeight_ = 0;
-}
+void MeshRenderer::clearShownImage() { shown_.clear(); }
 
 ReferenceImage MeshRenderer::readComparison() const {
-  if (comparedWithImage_) return reference_;
+  if (comparedWithImage_) return display_.referenceImage();
   if (!targets_.comparisonFramebuffer()) throw Error("no difference view has been rendered");
   ReferenceImage comparison;
   comparison.linear = true;
   comparison.path = "the comparison method";
-  comparison.pixels = {targets_.width(), targets_.height(),
-                       readPixels<float>(targets_.comparisonFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(),
-                                         targets_.height(), GL_FLOAT)};
+  comparison.pixels = {
+      targets_.width(), targets_.height(),
+      readFloatPixels(targets_.comparisonFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height())};
   return comparison;
 }
 
 LinearImage MeshRenderer::readLinear() const {
   return {targets_.width(), targets_.height(),
-          readPixels<float>(targets_.linearFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height(),
-                            GL_FLOAT)};
+          readFloatPixels(targets_.linearFramebuffer(), GL_COLOR_ATTACHMENT0, targets_.width(), targets_.height())};
 }
 
 void MeshRenderer::presentToDefaultFramebuffer(int left, int width, int height) const {
@@ -546,7 +393,7 @@ void MeshRenderer::presentToDefaultFramebuffer(int left, int width, int height) 
 }
 
 Image readDefaultFramebuffer(int width, int height) {
-  return {width, height, readPixels<uint8_t>(0, GL_BACK, width, height, GL_UNSIGNED_BYTE)};
+  return {width, height, readBytePixels(0, GL_BACK, width, height)};
 }
 
 }  // namespace radview::gl

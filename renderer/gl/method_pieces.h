@@ -5,9 +5,10 @@
 // calls of its own beyond the passes' uploads.
 #include "gl/bezier_pass.h"
 #include "gl/deferred_pass.h"
-#include "gl/mesh_renderer.h"
+#include "interp/interpolant.h"
 #include "interp/surface_triangulation.h"
 #include "interp/vertex_gradients.h"
+#include "mesh/radiosity_mesh.h"
 #include "mesh/topology.h"
 
 #include <glm/glm.hpp>
@@ -17,6 +18,21 @@
 
 namespace radview::gl {
 
+// What a pass's pieces were built for: a method's pieces in one Clough-Tocher variant, or the
+// quadratic method's 6-node triangles alone (drawn per pixel beside Gouraud's triangles and the
+// serendipity quads). Passes hold a std::optional of it: none, when they hold nothing.
+struct PiecesKey {
+  Method method = Method::Flat;
+  CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
+  bool quadraticTrianglesOnly = false;
+
+  static PiecesKey quadraticTriangles() { return {Method::Quadratic, CloughTocherVariant::AffineInvariant, true}; }
+  bool operator==(const PiecesKey& other) const {
+    return method == other.method && variant == other.variant && quadraticTrianglesOnly == other.quadraticTrianglesOnly;
+  }
+  bool operator!=(const PiecesKey& other) const { return !(*this == other); }
+};
+
 // The pieces as the Bezier pass draws them (which pieces: the method's MethodInfo::gpu; none for a
 // method drawn without pieces), and when `split` is given the lines that split
 // elements into them (none for quadratic elements).
@@ -24,14 +40,15 @@ namespace radview::gl {
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
                                         Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
 
-// What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients. It needs no OpenGL, so that the viewer can
-// make it beside its frame loop; it keeps the mesh it was made from.
+// What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients. It needs no OpenGL, so
+// that the viewer can make it beside its frame loop; it keeps the mesh it was made from.
 struct DeferredSetup {
   std::shared_ptr<const RadiosityMesh> mesh;
   Method method = Method::CloughTocher;
   CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
   std::unique_ptr<const SurfaceTriangulation> surface;
   CornerGradients gradients;
+  PiecesKey key() const { return {method, variant, false}; }
 };
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
                               Method method, CloughTocherVariant variant);
