@@ -5,6 +5,7 @@
 #include "gl/mesh_renderer.h"
 #include "gl/method_pieces.h"
 #include "import/load_file.h"
+#include "tests/gl/oblique_view.h"
 
 #include <gtest/gtest.h>
 
@@ -12,15 +13,6 @@
 
 namespace radview::gl {
 namespace {
-
-Camera view() {
-  Camera camera;
-  camera.eye = {0.5, -0.6, 1.1};
-  camera.target = {0.5, 0.5, 0.0};
-  camera.zNear = 0.1;
-  camera.zFar = 10.0;
-  return camera;
-}
 
 RadiosityMesh discontinuities() {
   return loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/discontinuities.gltf").mesh;
@@ -34,7 +26,7 @@ void expectSetUpOnAnotherThreadDrawsTheSame(Method method) {
   MeshRenderer built;
   built.setMesh(discontinuities());
   EXPECT_TRUE(built.piecesSetup(settings));  // not built yet
-  built.render(view(), settings, 96, 96);
+  built.render(test::obliqueView(), settings, 96, 96);
   EXPECT_FALSE(built.piecesSetup(settings));  // render() built them
 
   MeshRenderer adopted;
@@ -46,7 +38,7 @@ void expectSetUpOnAnotherThreadDrawsTheSame(Method method) {
   worker.join();
   adopted.adoptPieces(setup, settings.splitLines);
   EXPECT_FALSE(adopted.piecesSetup(settings));
-  adopted.render(view(), settings, 96, 96);
+  adopted.render(test::obliqueView(), settings, 96, 96);
 
   const LinearImage a = built.readLinear(), b = adopted.readLinear();
   ASSERT_EQ(a.rgba.size(), b.rgba.size());

@@ -5,6 +5,7 @@
 #include "gl/mesh_renderer.h"
 #include "import/load_file.h"
 #include "interp/interpolant.h"
+#include "tests/gl/oblique_view.h"
 #include "tests/gl/pixel_reference.h"
 
 #include <gtest/gtest.h>
@@ -14,15 +15,6 @@ namespace {
 
 constexpr int kSize = 120;
 
-Camera view() {
-  Camera camera;
-  camera.eye = {0.5, -0.6, 1.1};
-  camera.target = {0.5, 0.5, 0.0};
-  camera.zNear = 0.1;
-  camera.zFar = 10.0;
-  return camera;
-}
-
 // `perVertex`: the mesh as it is, few triangles, drawn in one pass, each vertex reading its
 // triangle's values; else with triangles out of view added until the draw has more vertices
 // than the image has pixels, drawn deferred (DeferredPass::draw).
@@ -31,9 +23,9 @@ test::PixelComparison compare(Method gpuMethod, Method cpuMethod, CloughTocherVa
   EglContext context;
   MeshRenderer renderer;
   RadiosityMesh mesh = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/discontinuities.gltf").mesh;
-  if (!perVertex) mesh = test::withTrianglesBehind(mesh, view(), kSize * kSize / 3 + 1);
+  if (!perVertex) mesh = test::withTrianglesBehind(mesh, test::obliqueView(), kSize * kSize / 3 + 1);
   renderer.setMesh(mesh);
-  const Camera camera = view();
+  const Camera camera = test::obliqueView();
   RenderSettings settings;
   settings.method = gpuMethod;
   settings.cloughTocher = variant;

@@ -6,6 +6,7 @@
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "import/load_file.h"
+#include "tests/gl/oblique_view.h"
 
 #include <gtest/gtest.h>
 
@@ -19,10 +20,7 @@ class DifferenceViewTest : public ::testing::Test {
   DifferenceViewTest() {
     mesh = loadFile(std::string(RADVIEW_SOURCE_DIR) + "/assets/discontinuities.gltf").mesh;
     renderer.setMesh(mesh);
-    camera.eye = {0.5, -0.6, 1.1};
-    camera.target = {0.5, 0.5, 0.0};
-    camera.zNear = 0.1;
-    camera.zFar = 10.0;
+    camera = test::obliqueView();
   }
   LinearImage renderLinear(Method method, int tessellation = 0) {
     RenderSettings s;

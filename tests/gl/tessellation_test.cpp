@@ -7,6 +7,7 @@
 #include "import/load_file.h"
 #include "scene/camera_presets.h"
 #include "solve/direct_light.h"
+#include "tests/gl/oblique_view.h"
 #include "tests/sanitizer/sanitizer_build.h"
 
 #include <gtest/gtest.h>
@@ -127,15 +128,6 @@ void expectWithinTolerance(const Renders& r, double exposure, double tolerance, 
   EXPECT_LE(worst, 1.01 * tolerance) << what;
 }
 
-Camera oblique() {
-  Camera c;
-  c.eye = {0.5, -0.6, 1.1};
-  c.target = {0.5, 0.5, 0.0};
-  c.zNear = 0.1;
-  c.zFar = 10;
-  return c;
-}
-
 Camera faceOnSquare() {  // the unit squares of discontinuities.gltf and t_vertices.gltf
   Camera c;
   c.eye = {0.5, 0.5, 1.2};
@@ -163,7 +155,7 @@ TEST(Tessellation, AdaptiveMeetsItsToleranceOnEveryBundledScene) {
     Camera camera;
   } scenes[] = {
       {"cornell box", cornellMesh, cameraFromSpec("file", cornellMesh.bounds(), cornell.scene.cameras)},
-      {"discontinuities", bundled("discontinuities.gltf"), oblique()},
+      {"discontinuities", bundled("discontinuities.gltf"), test::obliqueView()},
       {"t-vertices", bundled("t_vertices.gltf"), faceOnSquare()},
       {"fig. 9.8 quad", bundled("fig9_8_quad.gltf"), obliqueOnQuad()},
   };
@@ -200,13 +192,13 @@ void expectNoCracks(const Renders& r, const std::string& what) {
 TEST(Tessellation, NoLevelOrViewOpensCracks) {
   // Fixed levels 1 and 64, and adaptive levels (where neighbours' levels differ and only the
   // shared outer levels keep them joined), head-on and grazing, for both C1 methods.
-  Camera grazing = oblique();
+  Camera grazing = test::obliqueView();
   grazing.eye = {0.5, -1.5, 0.12};  // 4 degrees above the plane of the square
   for (const char* name : {"discontinuities.gltf", "t_vertices.gltf"}) {
     const RadiosityMesh mesh = bundled(name);
     for (Method method : {Method::CloughTocher, Method::C1Quadratic})
       for (int level : {1, 64, kAdaptiveTessellation})
-        for (const Camera& camera : {oblique(), grazing}) {
+        for (const Camera& camera : {test::obliqueView(), grazing}) {
           const std::string what = std::string(name) + " " + methodName(method) + " level " + std::to_string(level) +
                                    (&camera == &grazing ? " grazing" : "");
           expectNoCracks(renderBoth(mesh, camera, method, level, 0.0, 0.25 / 255), what);
@@ -217,7 +209,7 @@ TEST(Tessellation, NoLevelOrViewOpensCracks) {
 TEST(Tessellation, LevelSixtyFourIsSplitIntoDrawsLlvmpipeCanTake) {
   // 288 Clough-Tocher pieces at level 64 generate ~1.2 million triangles: many draws of at most
   // 50k each, and the image still matches the exact one (so no geometry went missing).
-  const Renders r = renderBoth(bundled("discontinuities.gltf"), oblique(), Method::CloughTocher, 64);
+  const Renders r = renderBoth(bundled("discontinuities.gltf"), test::obliqueView(), Method::CloughTocher, 64);
   EXPECT_GE(r.statistics.draws, 24u);
   expectWithinTolerance(r, 0.0, 0.5 / 255, "level 64");
 }
