@@ -1,5 +1,7 @@
 #include "app/command_bench.h"
 
+#include "app/bench_reference_run.h"
+#include "app/bench_rows.h"
 #include "app/commands.h"
 #include "app/import_flags.h"
 #include "app/method_choice.h"
@@ -79,19 +81,6 @@ LinearImage readTruth(const std::string& path, int width, int height) {
   return image.pixels;
 }
 
-// One line on standard error, rewritten in place at most twice a second: a bar, what is done,
-// and the time left.
-void showProgress(double fraction, const std::string& detail, double secondsLeft) {
-  static auto last = std::chrono::steady_clock::time_point{};
-  const auto now = std::chrono::steady_clock::now();
-  if (fraction < 1.0 && now - last < std::chrono::milliseconds(500)) return;
-  last = now;
-  constexpr int kWidth = 30;
-  const int filled = int(std::clamp(fraction, 0.0, 1.0) * kWidth + 0.5);
-  std::fprintf(stderr, "\r[%s%s] %s, %.0f s left   ", std::string(size_t(filled), '#').c_str(),
-               std::string(size_t(kWidth - filled), ' ').c_str(), detail.c_str(), std::max(0.0, secondsLeft));
-}
-
 // The ray tracer that makes the reference image: --reference gather or path-trace.
 RayTracer referenceTracer(const BenchOptions& options) {
   return options.reference == rayTracerInfo(RayTracer::PathTrace).name ? RayTracer::PathTrace : RayTracer::FinalGather;
@@ -104,90 +93,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // The ends of the error maps' diverging scale, and the red end of the reference's noise map,
 // display steps.
 constexpr double kErrorMapSteps = 10.0, kNoiseMapSteps = 1.0;
-
-// A row rendered: what the table reports of it, and its values for the error estimates.
-struct MeasuredRow {
-  BenchVariant variant;
-  TradeoffRow row;
-  RowValues values;
-  std::vector<RowValues> fromNodes;  // per pixel: its method drawing each run of the nodal reference
-  bool rayTraced = false;            // the final gather's row (--reference path-trace), not a GL method
-};
-
-// The per-pixel rows drawn again from each run of the nodal reference (bench/nodal_reference.h):
-// the values their error splits on.
-void splitErrors(gl::MeshRenderer& renderer, const Camera& camera, double exposureScale, int width, int height,
-                 const RadiosityMesh& relaxed, const RadiosityMesh& unrelaxed, const NodalReference& nodal,
-                 const BenchReference& reference, std::vector<MeasuredRow>& rows) {
-  for (int k = 0; k < nodal.runs; ++k)
-    for (bool isRelaxed : {true, false}) {
-      bool loaded = false;
-      for (MeasuredRow& m : rows) {
-        if (m.rayTraced || m.variant.tessellation != 0 || m.variant.relaxed != isRelaxed) continue;
-        if (!loaded) renderer.setMesh(nodal.withRun(isRelaxed ? relaxed : unrelaxed, k));
-        loaded = true;
-        gl::RenderSettings settings;
-        settings.method = m.variant.method;
-        settings.exposure = std::log2(exposureScale);
-        renderer.render(camera, settings, width, height);
-        m.fromNodes.push_back(reference.rowValues(renderer.readLinear()));
-      }
-    }
-}
-
-// The widest 95 % interval of the rows' display errors, half of it, in steps.
-double widestHalfInterval(const std::vector<MeasuredRow>& rows, const BenchReference& reference) {
-  double widest = 0.0;
-  for (const MeasuredRow& r : rows) {
-    const ErrorEstimate e = reference.error(r.values).display;
-    widest = std::max(widest, 0.5 * (e.rmsHigh() - e.rmsLow()));
-  }
-  return widest;
-}
-
-// The reference (the final gather or the path tracer) at pixel centres in its independent runs,
-// until `spp` samples per pixel and then, with `precision` > 0, until every row's interval is
-// that narrow (or `maxSeconds`).
-void referenceImage(ProgressiveImage& gather, const BenchOptions& options, const std::vector<MeasuredRow>& rows,
-                    BenchReference& reference, int& spp, double& seconds) {
-  const auto start = std::chrono::steady_clock::now();
-  const int runs = gather.runs();
-  const int target = (options.spp + runs - 1) / runs * runs;
-  auto runImages = [&] {
-    std::vector<LinearImage> images;
-    for (int r = 0; r < runs; ++r) images.push_back(gather.runImage(r));
-    return images;
-  };
-  while (gather.samplesPerPixel() < target) {
-    gather.addPasses(runs);
-    const double elapsed = secondsSince(start);
-    const double done = double(gather.samplesPerPixel()) / target;
-    showProgress(done, "reference " + std::to_string(gather.samplesPerPixel()) + "/" + std::to_string(target) + " spp",
-                 elapsed / done - elapsed);
-  }
-  reference.setRuns(runImages());
-  if (options.precision > 0.0) {
-    // The interval narrows as 1/sqrt(spp) or faster, so the passes still needed are about
-    // spp ((w / precision)^2 - 1): the time left is estimated from that.
-    for (double widest = widestHalfInterval(rows, reference); widest > options.precision;
-         widest = widestHalfInterval(rows, reference)) {
-      const double elapsed = secondsSince(start);
-      if (options.maxSeconds > 0.0 && elapsed >= options.maxSeconds) break;
-      if (gather.samplesPerPixel() + runs > kMaxGatherSpp) break;
-      const double needed = gather.samplesPerPixel() * (widest * widest / (options.precision * options.precision));
-      showProgress(gather.samplesPerPixel() / needed,
-                   "reference " + std::to_string(gather.samplesPerPixel()) + " spp, widest half-interval " +
-                       std::to_string(widest).substr(0, 5) + " steps (target " +
-                       std::to_string(options.precision).substr(0, 5) + ")",
-                   elapsed / gather.samplesPerPixel() * (needed - gather.samplesPerPixel()));
-      gather.addPasses(runs);
-      reference.setRuns(runImages());
-    }
-  }
-  std::fprintf(stderr, "\n");
-  spp = gather.samplesPerPixel();
-  seconds = secondsSince(start);
-}
 
 }  // namespace
 
@@ -325,72 +230,12 @@ int runBench(const BenchOptions& options) {
 
   const std::vector<BenchVariant> variants = benchVariants(levels, tolerances, hasC0, gl::kAdaptiveTessellation);
 
-  std::vector<MeasuredRow> rows;
-  std::vector<std::string> skipped;
   gl::EglContext context;
   gl::MeshRenderer renderer;
-  {
-    bool relaxedLoaded = true;
-    renderer.setMesh(mesh);
-    // Per method and mesh: the triangles of a frame at a fixed level L over L^2, measured at the
-    // first level drawn. From it a finer level's count is known before it is drawn: at 10^5
-    // elements and 1080p, level 32 makes 7e8 triangles, for an image the per-pixel row already
-    // shows exactly.
-    std::map<std::pair<int, bool>, double> trianglesPerLevelSquared;
-    for (const BenchVariant& v : variants) {
-      const bool fixedLevel = v.tessellation > 0 && v.tessellation != gl::kAdaptiveTessellation;
-      const std::pair<int, bool> methodAndMesh{int(v.method), v.relaxed};
-      const auto perLevelSquared = trianglesPerLevelSquared.find(methodAndMesh);
-      if (fixedLevel && options.maxTrianglesPerPixel > 0.0 && perLevelSquared != trianglesPerLevelSquared.end() &&
-          perLevelSquared->second * v.tessellation * v.tessellation >
-              options.maxTrianglesPerPixel * double(width) * double(height)) {
-        skipped.push_back(methodName(v.method) + " " + v.setting);
-        continue;
-      }
-      if (v.relaxed != relaxedLoaded) {
-        renderer.setMesh(v.relaxed ? mesh : unrelaxed);
-        relaxedLoaded = v.relaxed;
-      }
-      gl::RenderSettings settings;
-      settings.method = v.method;
-      settings.tessellation = v.tessellation;
-      settings.tessellationTolerance = v.tolerance / 255.0;
-      settings.exposure = options.exposure;
-      const gl::FrameTimes times =
-          gl::timeFrames(renderer, camera, settings, width, height, options.frames, options.rowSeconds);
-      MeasuredRow measured;
-      measured.variant = v;
-      TradeoffRow& row = measured.row;
-      row.method = methodName(v.method);
-      row.setting = v.setting;
-      row.frameMs = times.medianGpuMs();
-      const auto& tess = renderer.tessellationStatistics();
-      if (fixedLevel)
-        trianglesPerLevelSquared[methodAndMesh] =
-            double(tess.trianglesGenerated) / (double(v.tessellation) * v.tessellation);
-      row.triangles = !methodInfo(v.method).bezierPieces() ? renderer.triangleCount()
-                      : v.tessellation == 0                ? tess.patches
-                                                           : tess.trianglesGenerated;
-      if (v.tessellation == 0) {  // each method's picture, per pixel, beside the reference's
-        std::string name = row.method + (v.relaxed ? "" : "-not-relaxed") + ".png";
-        writePng(renderer.readDisplay(), options.outDir + "/" + name);
-      }
-      const LinearImage image = renderer.readLinear();
-      row.image = rowFileStem(row) + ".exr";
-      writeLinearImage(image, options.outDir + "/" + row.image);
-      measured.values = reference.rowValues(image);
-      auto meanAbs = [](const std::vector<float>& jumps) {
-        double sum = 0.0;
-        for (float j : jumps) sum += std::abs(j);
-        return jumps.empty() ? 0.0 : sum / double(jumps.size());
-      };
-      row.machBands = meanAbs(measured.values.smoothJumps);
-      row.c0Kinks = meanAbs(measured.values.c0Jumps);
-      std::fprintf(stderr, "%s %s: %.3g ms (median of %zu)\n", row.method.c_str(), row.setting.c_str(), row.frameMs,
-                   times.frames.size());
-      rows.push_back(std::move(measured));
-    }
-  }
+  const RenderedRows rendered =
+      renderRows(renderer, mesh, unrelaxed, variants, camera, reference, width, height, options);
+  std::vector<MeasuredRow> rows = rendered.rows;
+  const std::vector<std::string>& skipped = rendered.skipped;
 
   std::ostringstream header;
   header << "radview bench " << options.file << ": " << width << "x" << height << ", camera '"
@@ -422,9 +267,9 @@ int runBench(const BenchOptions& options) {
     else
       finalGather = std::make_unique<FinalGather>(mesh, gather);
     ProgressiveImage& estimate = pathTrace ? static_cast<ProgressiveImage&>(*tracer) : *finalGather;
-    int spp = 0;
-    double seconds = 0.0;
-    referenceImage(estimate, options, rows, reference, spp, seconds);
+    const ReferenceRun run = convergeReference(estimate, options, rows, reference);
+    const int spp = run.spp;
+    const double seconds = run.seconds;
     writeLinearImage(reference.mean(), options.outDir + "/reference.exr");
     writePng(displayedGather(reference.mean(), exposureScale), options.outDir + "/reference.png");
     writePng(magnitudeMap(width, height, reference.pixels(), reference.pixelNoiseSteps(), kNoiseMapSteps),
