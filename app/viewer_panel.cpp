@@ -241,22 +241,23 @@ void drawPanel(ViewerState& state) {
   }
   drawExamples(state);
 
-  section("Interpolant (C&W 9.2)");
-  // One radio button per entry of the registry, two to a row: the methods, then the ray tracers
-  // (numbered after the methods), which converge in the background.
+  // One radio button per entry of the registry, two to a row: the interpolants, then the ray
+  // tracers (numbered after the methods), which converge in the background.
   const int methods = int(methodRegistry().size());
   const RayTracer shownTracer = state.gather.pathTrace ? RayTracer::PathTrace : RayTracer::FinalGather;
   int choice = state.gather.on ? methods + int(shownTracer) : int(state.settings.method);
-  auto radio = [&](const std::string& label, char key, int value, const std::string& summary,
+  auto radio = [&](size_t column, const std::string& label, char key, int value, const std::string& summary,
                    const std::string& where) {
-    if (value % 2) ImGui::SameLine(190);
+    if (column % 2) ImGui::SameLine(190);
     ImGui::RadioButton((label + " [" + key + "]").c_str(), &choice, value);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", summary.c_str(), where.c_str());
   };
+  section("Interpolant (C&W 9.2)");
   for (const MethodInfo& info : methodRegistry())
-    radio(info.label, info.key, int(info.method), info.summary, info.section);
+    radio(size_t(info.method), info.label, info.key, int(info.method), info.summary, info.section);
+  section("Ray traced, converging in the background");
   for (const RayTracerInfo& info : rayTracerRegistry())
-    radio(info.label, info.key, methods + int(info.tracer), info.summary, info.section);
+    radio(size_t(info.tracer), info.label, info.key, methods + int(info.tracer), info.summary, info.section);
   state.gather.on = choice >= methods;
   state.gather.pathTrace = state.gather.on && RayTracer(choice - methods) == RayTracer::PathTrace;
   if (!state.gather.on) state.settings.method = static_cast<Method>(choice);
