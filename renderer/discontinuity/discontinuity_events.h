@@ -18,6 +18,7 @@
 //    parallel to (or coplanar with) an emitter edge. Crossing it a whole edge of the visible
 //    polygon appears at once, so the first derivative jumps (Heckbert's EE degeneracy; the
 //    penumbra and umbra boundaries of parallel squares).
+#include "geom/plane_segments.h"
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 
@@ -93,22 +94,5 @@ constexpr int kCriticalLineSamples = 32;
 // hemisphere). To any element much larger than the gap that is a step, C-1, as a contact is.
 std::vector<std::vector<EventSegment>> findContacts(const Scene& scene);
 constexpr double kFlatFootprintGap = 0.01;
-
-// The parts of segment a-b inside a polygon (any simple polygon, concave included), as
-// parameter intervals [t0, t1] of a + t (b - a), sorted; parts within `tolerance` of the
-// boundary and pieces shorter than it are left out.
-struct ParameterInterval {
-  double t0 = 0.0, t1 = 0.0;
-};
-std::vector<ParameterInterval> clipSegmentToPolygon(const Vec2& a, const Vec2& b, const std::vector<Vec2>& polygon,
-                                                    double tolerance);
-
-// Distance from p to the segment a-b.
-double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b);
-
-// Where a segment ending at `end` (its other end `from`) ends when put exactly on the line
-// through a and b: where its own line meets that line, so it stays on its own line, or, for
-// lines too near parallel to meet within `reach` of `end`, the projection of `end`.
-Vec2 endOntoLine(const Vec2& from, const Vec2& end, const Vec2& a, const Vec2& b, double reach);
 
 }  // namespace radview

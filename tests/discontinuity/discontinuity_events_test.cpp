@@ -352,25 +352,5 @@ TEST(DiscontinuityEventsTest, APolygonLyingAHairInFrontOfAnotherLeavesItsOutline
   EXPECT_EQ(foot[0].gap, 0.0);
 }
 
-TEST(DiscontinuityEventsTest, ClipSegmentToConcavePolygonKeepsTheInsidePartsOnly) {
-  // An L: the segment y = 1.5 crosses the notch [1, 2] x [1, 2].
-  const std::vector<Vec2> ell = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-  auto pieces = clipSegmentToPolygon({-1, 0.5}, {3, 0.5}, ell, 1e-9);
-  ASSERT_EQ(pieces.size(), 1u);
-  EXPECT_NEAR(pieces[0].t0, 0.25, 1e-15);
-  EXPECT_NEAR(pieces[0].t1, 0.75, 1e-15);
-  pieces = clipSegmentToPolygon({-1, 1.5}, {3, 1.5}, ell, 1e-9);
-  ASSERT_EQ(pieces.size(), 1u);
-  EXPECT_NEAR(pieces[0].t1, 0.5, 1e-15);
-  // Along an edge (the notch's bottom, then on into the inside): only the inside part.
-  pieces = clipSegmentToPolygon({2, 1}, {0.5, 1}, ell, 1e-9);
-  ASSERT_EQ(pieces.size(), 1u);
-  EXPECT_NEAR(pieces[0].t0, 1.0 / 1.5, 1e-15);
-  // Through a vertex, and entirely on the boundary.
-  EXPECT_EQ(clipSegmentToPolygon({0, 0}, {2, 2}, ell, 1e-9).size(), 1u);
-  EXPECT_TRUE(clipSegmentToPolygon({0, 0}, {2, 0}, ell, 1e-9).empty());
-  EXPECT_TRUE(clipSegmentToPolygon({5, 5}, {6, 6}, ell, 1e-9).empty());
-}
-
 }  // namespace
 }  // namespace radview
