@@ -1,5 +1,6 @@
 #include "discontinuity/discontinuity_mesher.h"
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 #include "discontinuity/critical_lines.h"
 #include "discontinuity/discontinuity_events.h"
@@ -21,16 +22,6 @@ namespace {
 // Triangles per unit area that a refinement to maximum edge length `size` gives, about: its
 // triangles are near-equilateral with edges between size / 2 and size.
 double trianglesPerArea(double size) { return 1.0 / (0.25 * size * size); }
-
-struct DisjointSets {
-  std::vector<size_t> parent;
-  explicit DisjointSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-  size_t find(size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(size_t a, size_t b) { parent[find(a)] = find(b); }
-};
 
 // Appends one polygon's constrained mesh to `mesh`. Nodes: one per (vertex, fan of triangles
 // around it not separated by a C-1 edge), so the two sides of a C-1 edge get their own nodes

@@ -1,5 +1,6 @@
 #include "edit/continuity_edit.h"
 
+#include "core/disjoint_sets.h"
 #include "core/error.h"
 #include "mesh/topology.h"
 
@@ -38,16 +39,6 @@ std::optional<uint32_t> findEdge(const MeshTopology& topology, uint32_t p, uint3
 bool sameValues(const Node& x, const Node& y, bool gradients) {
   return x.B == y.B && (!gradients || x.gradient == y.gradient);
 }
-
-struct DisjointSets {
-  std::vector<size_t> parent;
-  explicit DisjointSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), size_t(0)); }
-  size_t find(size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(size_t a, size_t b) { parent[find(a)] = find(b); }
-};
 
 // After the edge between `here` and `there` became C-1: the corners that use `node` are joined
 // across every edge at it, not tagged C-1, along which their elements meet: edges leaving the

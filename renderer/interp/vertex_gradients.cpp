@@ -1,5 +1,6 @@
 #include "interp/vertex_gradients.h"
 
+#include "core/disjoint_sets.h"
 #include "core/parallel_for.h"
 
 #include <algorithm>
@@ -14,17 +15,6 @@ namespace radview {
 namespace {
 
 using Gradient = std::array<Vec3, 3>;  // per channel
-
-// Union-find over triangle corners (3 t + k).
-struct Sectors {
-  std::vector<uint32_t> parent;
-  explicit Sectors(size_t corners) : parent(corners) { std::iota(parent.begin(), parent.end(), 0u); }
-  uint32_t find(uint32_t c) {
-    while (parent[c] != c) c = parent[c] = parent[parent[c]];
-    return c;
-  }
-  void join(uint32_t a, uint32_t b) { parent[find(a)] = find(b); }
-};
 
 // Two unit vectors spanning the plane with unit normal n.
 std::pair<Vec3, Vec3> planeBasis(const Vec3& n) {
@@ -118,7 +108,7 @@ CornerGradients vertexGradients(const SurfaceTriangulation& surface, bool useSto
   }
 
   // Sectors: corners at one vertex joined across C1 edges.
-  Sectors sectors(3 * triangles.size());
+  DisjointSets<uint32_t> sectors(3 * triangles.size());  // over triangle corners (3 t + k)
   for (uint32_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const int64_t u = triangles[t].neighbour[k];
