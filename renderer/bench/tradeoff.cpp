@@ -68,6 +68,19 @@ std::string markdownTable(const std::vector<TradeoffRow>& rows) {
   return out.str();
 }
 
+namespace {
+
+// A text field as RFC 4180 has it: quoted where it holds a comma, a quote or a line break (a
+// setting such as "per pixel, C0 not relaxed"), its quotes doubled.
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
 std::string csvTable(const std::vector<TradeoffRow>& rows) {
   std::ostringstream out;
   out << "method,setting,frame_ms,triangles,rmse,max,display_rmse_steps,display_max_steps,mach_steps_per_px,"
@@ -80,13 +93,13 @@ std::string csvTable(const std::vector<TradeoffRow>& rows) {
     return number(e.rms(), 6) + "," + number(e.rmsLow(), 6) + "," + number(e.rmsHigh(), 6);
   };
   for (const TradeoffRow& r : rows)
-    out << r.method << "," << r.setting << "," << number(r.frameMs, 6) << "," << r.triangles << "," << number(r.rmse, 6)
-        << "," << number(r.maxError, 6) << "," << number(r.displayRmse, 6) << "," << number(r.displayMax, 6) << ","
-        << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << "," << (r.pareto ? 1 : 0) << ","
-        << estimate(r.linearError) << "," << estimate(r.displayError) << "," << number(r.referenceNoiseRmse, 6) << ","
-        << number(r.referenceNoiseSteps, 6) << "," << r.image << "," << estimate(r.machError) << ","
-        << estimate(r.c0KinkError) << "," << (r.split ? estimate(r.solutionPart) : ",,") << ","
-        << (r.split ? estimate(r.reconstructionPart) : ",,") << "\n";
+    out << csvField(r.method) << "," << csvField(r.setting) << "," << number(r.frameMs, 6) << "," << r.triangles << ","
+        << number(r.rmse, 6) << "," << number(r.maxError, 6) << "," << number(r.displayRmse, 6) << ","
+        << number(r.displayMax, 6) << "," << number(r.machBands, 6) << "," << number(r.c0Kinks, 6) << ","
+        << (r.pareto ? 1 : 0) << "," << estimate(r.linearError) << "," << estimate(r.displayError) << ","
+        << number(r.referenceNoiseRmse, 6) << "," << number(r.referenceNoiseSteps, 6) << "," << csvField(r.image) << ","
+        << estimate(r.machError) << "," << estimate(r.c0KinkError) << "," << (r.split ? estimate(r.solutionPart) : ",,")
+        << "," << (r.split ? estimate(r.reconstructionPart) : ",,") << "\n";
   return out.str();
 }
 

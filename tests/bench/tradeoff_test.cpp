@@ -61,6 +61,17 @@ TEST(TradeoffTest, CsvKeepsItsColumnsAndAddsTheEstimatesByName) {
   EXPECT_EQ(std::count(header.begin(), header.end(), ','), std::count(line.begin(), line.end(), ','));
 }
 
+// A setting with a comma is one quoted field (RFC 4180): Python's csv module reads it back.
+TEST(TradeoffTest, CsvQuotesTextWithCommasOrQuotes) {
+  TradeoffRow r = row("c1-quadratic", 1, 1);
+  r.setting = "per pixel, C0 not relaxed";
+  r.image = "say \"x\".exr";
+  const std::string csv = csvTable({r});
+  const std::string line = csv.substr(csv.find('\n') + 1);
+  EXPECT_EQ(line.rfind("c1-quadratic,\"per pixel, C0 not relaxed\",1,", 0), 0u) << line;
+  EXPECT_NE(line.find(",\"say \"\"x\"\".exr\","), std::string::npos) << line;
+}
+
 TEST(TradeoffTest, RowFilesAreNamedByMethodAndSetting) {
   TradeoffRow r = row("c1-quadratic", 1, 1);
   r.setting = "per pixel, C0 not relaxed";
