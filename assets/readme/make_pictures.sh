@@ -48,14 +48,5 @@ budget="--max-elements 1000 --tolerance 1 --min-element-size 0.00125"
 "$radview" render "$solved/corner.glb" --method gouraud --edges $corner --out $out/view_driven_corner.png
 "$radview" render "$solved/corner.glb" --method gouraud --edges --size 288x288 --out $out/view_driven_whole.png
 
-# Against the truth: Cycles (blender) renders the Cornell box's view; every way radview shows it,
-# per surface, and a picture per row (truth | row | signed difference, +-10 %).
-/usr/bin/python3 tests/truth/agreement_table.py --radview "$radview" --scene assets/cornell_box.gltf --size 128x128 \
-  --cycles-spp 2048 --out-dir /tmp/radview-agreement
-mkdir -p $out/truth
-for row in path-tracer-1024-spp-x-2-seeds clough-tocher-the-scene-as-opened-default-solve clough-tocher-bundled-solution \
-  final-gather-over-the-bundled-solution-256-spp direct-light-only-direct-only-clough-tocher \
-  clough-tocher-converged-solve-with-discontinuity-meshing \
-  clough-tocher-shooting-converged-mesh-by-display-steps-alone; do
-  cp /tmp/radview-agreement/$row.png $out/truth/
-done
+# The truth table's pictures (truth | row | difference) come with its figures:
+# tests/bench/regenerate_figures.sh truth.
