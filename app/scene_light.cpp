@@ -9,6 +9,18 @@ void addSolverOptions(CLI::App& command, SolveSettings& s) {
       ->check(CLI::Range(1, kMaxSolverSamples))
       ->capture_default_str();
   command
+      .add_option("--max-samples", s.solver.maxSamples,
+                  "Solve: a node that sees a shooter in part takes more batches of --samples, up to this many "
+                  "samples, until --visibility-error is met; at most --samples: every node takes --samples")
+      ->check(CLI::Range(1, kMaxSolverSamples))
+      ->capture_default_str();
+  command
+      .add_option("--visibility-error", s.solver.visibilityError,
+                  "Solve: the standard error of a partly visible shooter's visible fraction that ends its sampling "
+                  "(with --max-samples)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  command
       .add_option("--unshot", s.solver.stopUnshotFraction,
                   "Solve: stop once the unshot power is this fraction of the emitted power")
       ->check(CLI::Range(0.0, 1.0))
@@ -27,10 +39,11 @@ void addSolverOptions(CLI::App& command, SolveSettings& s) {
                   "converges the mesh: the Cornell box within 0.5 % of the truth with discontinuity meshing")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  command.add_flag("--discontinuity-meshing,!--no-discontinuity-meshing", s.discontinuityMeshing,
-                   "Solve: patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
-                   "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
-                   "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size")
+  command
+      .add_flag("--discontinuity-meshing,!--no-discontinuity-meshing", s.discontinuityMeshing,
+                "Solve: patches from discontinuity meshing (Heckbert 1992; Lischinski et al. 1992): each polygon a "
+                "constrained Delaunay mesh through the shadow boundaries its emitters cast, contact lines tagged "
+                "C-1, D1 boundaries C0; its triangles shoot in groups of the patch size")
       ->capture_default_str();
 }
 

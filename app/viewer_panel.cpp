@@ -241,8 +241,9 @@ void drawPanel(ViewerState& state) {
   }
   drawExamples(state);
 
-  // One radio button per entry of the registry, two to a row: the interpolants, then the ray
-  // tracers (numbered after the methods), which converge in the background.
+  // One radio button per entry of the registry, two to a row: the interpolants, each with its
+  // options below, then the ray tracers (numbered after the methods), which converge in the
+  // background.
   const int methods = int(methodRegistry().size());
   const RayTracer shownTracer = state.gather.pathTrace ? RayTracer::PathTrace : RayTracer::FinalGather;
   int choice = state.gather.on ? methods + int(shownTracer) : int(state.settings.method);
@@ -255,12 +256,10 @@ void drawPanel(ViewerState& state) {
   section("Interpolant (C&W 9.2)");
   for (const MethodInfo& info : methodRegistry())
     radio(size_t(info.method), info.label, info.key, int(info.method), info.summary, info.section);
-  section("Ray traced, converging in the background");
-  for (const RayTracerInfo& info : rayTracerRegistry())
-    radio(size_t(info.tracer), info.label, info.key, methods + int(info.tracer), info.summary, info.section);
-  state.gather.on = choice >= methods;
-  state.gather.pathTrace = state.gather.on && RayTracer(choice - methods) == RayTracer::PathTrace;
-  if (!state.gather.on) state.settings.method = static_cast<Method>(choice);
+  if (choice < methods) {
+    state.gather.on = state.gather.pathTrace = false;
+    state.settings.method = static_cast<Method>(choice);
+  }
   if (state.settings.method == Method::Gouraud) {
     ImGui::Checkbox("Perspective-correct [P]", &state.settings.perspectiveCorrect);
     if (ImGui::IsItemHovered())
@@ -301,6 +300,13 @@ void drawPanel(ViewerState& state) {
     }
   }
 
+  section("Ray traced, converging in the background");
+  for (const RayTracerInfo& info : rayTracerRegistry())
+    radio(size_t(info.tracer), info.label, info.key, methods + int(info.tracer), info.summary, info.section);
+  if (choice >= methods) {
+    state.gather.on = true;
+    state.gather.pathTrace = RayTracer(choice - methods) == RayTracer::PathTrace;
+  }
   if (state.gather.on) drawGatherControls(state);
 
   section("Display");

@@ -23,6 +23,18 @@ struct ReceiverPoint {
   std::optional<Vec3> inside = std::nullopt;
 };
 
+// How many of a shooter's samples a node's visibility takes: batches of the sampler's samples()
+// (one stratified set each). A node whose first batch is all visible or all hidden is settled
+// by it (C&W §4.9.2's samples are spent where the answer is uncertain: the penumbrae); one that
+// sees the shooter in part takes at least minBatches, then more until the standard error of its
+// estimate is below `targetError` of the unoccluded value, or maxBatches. maxBatches 1 is one
+// batch everywhere.
+struct VisibilitySampling {
+  int maxBatches = 1;
+  int minBatches = 4;
+  double targetError = 0.0;  // relative to the node's unoccluded F0 B
+};
+
 // F(dA_x -> A_i) = F0 * (sum_k K_k V_k) / (sum_k K_k), F0 the exact unoccluded point-to-polygon
 // form factor (PatchFormFactor) and the fraction its visible share, estimated over the
 // shooter's samples k, each weighted by its share of the kernel, K_k = w_k cos(theta_x)
@@ -37,9 +49,12 @@ struct ReceiverPoint {
 //
 // Samples behind the receiver or the shooter cast no ray; no ray is cast when F0 is 0.
 // `visibility` null: nothing occludes (V = 1). `rays` is increased by the rays cast. `scratch`
-// is reused between calls.
+// is reused between calls. With several batches (`sampling`), the estimate pools them all, and
+// `standardError`, when given, receives its standard error from the spread of the batches' own
+// estimates; 0 for a node settled by one batch (nothing measured says otherwise).
 double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
-                               const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch);
+                               const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch,
+                               const VisibilitySampling& sampling = {}, double* standardError = nullptr);
 
 // The radiosity x gathers from a shooter whose polygons shoot different radiosities B_p (a
 // patch grouping several elements, shooting_patches.h): F0 * (sum_k K_k V_k B_p(k)) / (sum_k K_k),
@@ -50,6 +65,7 @@ double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shoot
 // the sampler was built from.
 Rgb radiosityFromPatch(const ReceiverPoint& x, const PatchSampler& shooter, const std::vector<Rgb>& polygonB,
                        SampleStream& stream, const RayCaster* visibility, size_t& rays,
-                       std::vector<AreaSample>& scratch);
+                       std::vector<AreaSample>& scratch, const VisibilitySampling& sampling = {},
+                       Rgb* standardError = nullptr);
 
 }  // namespace radview

@@ -177,7 +177,14 @@ Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std:
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
   return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, *record.sampler,
-                            record.deltaB, stream, rayCaster_.get(), rays, scratch);
+                            record.deltaB, stream, rayCaster_.get(), rays, scratch, visibilitySampling());
+}
+
+VisibilitySampling ProgressiveRefinement::visibilitySampling() const {
+  VisibilitySampling sampling;
+  sampling.maxBatches = std::max(1, settings_.maxSamples / std::max(1, settings_.samples));
+  sampling.targetError = settings_.visibilityError;
+  return sampling;
 }
 
 bool ProgressiveRefinement::finished() const {

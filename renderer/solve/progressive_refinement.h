@@ -12,6 +12,7 @@
 #include "mesh/radiosity_mesh.h"
 #include "scene/scene.h"
 #include "solve/adaptive_subdivision.h"
+#include "solve/element_to_node.h"
 #include "trace/patch_sampler.h"
 #include "trace/ray_caster.h"
 
@@ -24,7 +25,15 @@ namespace radview {
 
 struct SolverSettings {
   uint64_t seed = 1;
-  int samples = 16;                  // shooter samples per receiving node and shot
+  // Shooter samples per receiving node and shot, in batches: every node takes one batch; a node
+  // that sees the shooter in part takes more, up to maxSamples, until the standard error of its
+  // visible fraction is below visibilityError (element_to_node.h's VisibilitySampling).
+  // maxSamples <= samples: one batch for every node. The defaults give the Cornell box's floor
+  // a quarter of the noise of 16 samples everywhere, for about a third more time
+  // (tests/bench/results/solution_noise.md).
+  int samples = 32;
+  int maxSamples = 256;
+  double visibilityError = 0.01;
   double stopUnshotFraction = 0.01;  // stop once unshot power <= this * emitted power
   size_t maxShots = 100000;          // and after this many shots in any case
   bool quadratic = false;            // make the elements quadratic (mid-edge nodes) first
@@ -114,6 +123,7 @@ class ProgressiveRefinement {
   double unshotPower(const Patch& patch) const;  // sum over its elements of |unshot| A, R + G + B
   void makeSampler(Patch& patch) const;
   Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
+  VisibilitySampling visibilitySampling() const;
   void valueNewNodes(size_t firstNode);
   void updateUnshotFraction();
   void makePatchFormFactors() const;

@@ -245,6 +245,9 @@ TEST(ProgressiveRefinementTest, SameSeedSameBitsWhateverTheThreads) {
   const Rgb deltaB = initial.materials[initial.elements[shooter].material].E;
   const PatchSampler sampler(initial.cornerPositions(shooter), settings.samples);
   const RayCaster caster(scene);
+  VisibilitySampling sampling;  // as the solver samples: batches where the light is seen in part
+  sampling.maxBatches = settings.maxSamples / settings.samples;
+  sampling.targetError = settings.visibilityError;
   std::vector<AreaSample> scratch;
   std::vector<char> done(initial.nodes.size(), 0);
   for (uint32_t e = 0; e < initial.elements.size(); ++e) {
@@ -260,7 +263,8 @@ TEST(ProgressiveRefinementTest, SameSeedSameBitsWhateverTheThreads) {
       const Vec3 toInside = inside - initial.nodes[node].position;
       const double step = std::min(0.01, 2.0 * RayCaster::kLift * scene.bounds().diagonal() / glm::length(toInside));
       const Vec3 x = initial.nodes[node].position;
-      const double F = elementToNodeFormFactor({x, n, x + step * toInside}, sampler, stream, &caster, rays, scratch);
+      const double F =
+          elementToNodeFormFactor({x, n, x + step * toInside}, sampler, stream, &caster, rays, scratch, sampling);
       const Rgb expected = material.E + material.rho * ((Rgb(0.0) + deltaB * F) + Rgb(0.0));
       ASSERT_EQ(std::memcmp(&expected, &once.nodes[node].B, sizeof(Rgb)), 0) << "node " << node;
     }
