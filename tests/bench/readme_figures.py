@@ -9,6 +9,7 @@ is made here from result files alone, never typed by hand:
   trade-fig9_14  assets/bench/fig9_14/bench.csv      (radview bench on fig. 9.14's scene)
   trade-cornell  assets/bench/cornell/bench.csv, .md (radview bench on the bundled solution)
   truth          tests/bench/results/truth/agreement.md (tests/truth/agreement_table.py)
+  solution-noise tests/bench/results/solution_noise.md (tests/bench/solution_noise.py)
 
 tests/bench/regenerate_figures.sh runs those benchmarks and then this with --write. Without
 --write it checks: exit 1 naming each block that differs from what the files give (a test runs
@@ -171,7 +172,16 @@ def truth(root):
     return lines
 
 
-BLOCKS = {"trade-fig9_14": trade_fig9_14, "trade-cornell": trade_cornell, "truth": truth}
+def solution_noise(root):
+    path = os.path.join(root, "tests/bench/results/solution_noise.md")
+    if not os.path.isfile(path):
+        fail("no %s: run tests/bench/regenerate_figures.sh noise" % path)
+    with open(path) as f:
+        return f.read().rstrip("\n").split("\n")
+
+
+BLOCKS = {"trade-fig9_14": trade_fig9_14, "trade-cornell": trade_cornell, "truth": truth,
+          "solution-noise": solution_noise}
 
 
 def main():

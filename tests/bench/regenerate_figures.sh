@@ -4,7 +4,9 @@
 # build on a quiet machine: its timings are the machine's, and README states the hardware beside
 # each table.
 #   tests/bench/regenerate_figures.sh [RADVIEW] [PART...]
-# PART: fig9_14, cornell, cornell-truth (radview bench, into assets/bench/PART/), truth (Cycles
+# PART: fig9_14, cornell, cornell-truth (radview bench, into assets/bench/PART/), noise (the
+# solver's noise and time at three sample settings, tests/bench/solution_noise.py, into
+# tests/bench/results/solution_noise.md), truth (Cycles
 # against every way radview shows the Cornell box, tests/truth/agreement_table.py: needs blender;
 # its table into tests/bench/results/truth/, its pictures into assets/readme/truth/), or all (the
 # default). Minutes each on 2 cores; truth about half an hour.
@@ -23,21 +25,44 @@ wants() {
   return 1
 }
 for part in "${parts[@]}"; do
-  case $part in all | fig9_14 | cornell | cornell-truth | truth) ;;
-    *) echo "regenerate_figures: unknown part '$part' (fig9_14, cornell, cornell-truth, truth, all)" >&2; exit 2 ;;
+  case $part in all | fig9_14 | cornell | cornell-truth | noise | truth) ;;
+    *) echo "regenerate_figures: unknown part '$part' (fig9_14, cornell, cornell-truth, noise, truth, all)" >&2
+       exit 2 ;;
   esac
 done
 
+# A bench writes every row's image, linear EXR and error map; what the docs show is kept under
+# assets/bench/PART: the tables and plot, each method's picture, the reference and its noise,
+# and the per-pixel rows' error maps.
+bench() {
+  local part=$1 work=build/bench-figures/$1
+  shift
+  rm -rf "$work" && mkdir -p "$work"
+  "$radview" bench "$@" --out-dir "$work"
+  rm -rf "assets/bench/$part" && mkdir -p "assets/bench/$part"
+  local file name
+  for file in "$work"/bench.md "$work"/bench.csv "$work"/*.png; do
+    name=$(basename "$file")
+    case $name in *-error.png) case $name in *-per-pixel*) ;; *) continue ;; esac ;; esac
+    cp "$file" "assets/bench/$part/"
+  done
+}
 if wants fig9_14; then
-  "$radview" bench assets/fig9_14.gltf --camera 0.7,0.5,1.9/0.7,0.5,0/0,1,0 --size 320x320 --spp 1024 \
-    --frames 9 --out-dir assets/bench/fig9_14
+  bench fig9_14 assets/fig9_14.gltf --camera 0.7,0.5,1.9/0.7,0.5,0/0,1,0 --size 320x320 --spp 1024 --frames 9
 fi
 if wants cornell; then
-  "$radview" bench assets/cornell_box_solved.glb --out-dir assets/bench/cornell
+  bench cornell assets/cornell_box_solved.glb
 fi
 if wants cornell-truth; then
-  "$radview" bench assets/cornell_box_solved.glb --reference path-trace --size 256x256 --spp 1024 \
-    --out-dir assets/bench/cornell-truth
+  bench cornell-truth assets/cornell_box_solved.glb --reference path-trace --size 256x256 --spp 1024
+fi
+if wants noise; then
+  mkdir -p tests/bench/results
+  /usr/bin/python3 tests/bench/solution_noise.py --radview "$radview" --rounds 3 \
+    --out tests/bench/results/solution_noise.md \
+    --config 'before: 16 samples everywhere | --discontinuity-meshing --samples 16 --max-samples 16' \
+    --config 'the defaults: 32, up to 256 where seen in part | --discontinuity-meshing' \
+    --config '128 samples everywhere | --discontinuity-meshing --samples 128 --max-samples 128'
 fi
 if wants truth; then
   work=build/truth-figures
