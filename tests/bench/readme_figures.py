@@ -1,19 +1,21 @@
 #!/usr/bin/python3
-"""README's measured figures, made from the files the benchmarks write.
+"""The docs' measured figures, made from the files the benchmarks write.
 
   /usr/bin/python3 tests/bench/readme_figures.py [--write] [--root DIR]
 
-Each block of README.md between '<!-- begin: figures NAME -->' and '<!-- end: figures NAME -->'
-is made here from result files alone, never typed by hand:
+Each block of README.md or renderer/bench/README.md between '<!-- begin: figures NAME -->' and
+'<!-- end: figures NAME -->' is made here from result files alone, never typed by hand:
 
   trade-fig9_14  assets/bench/fig9_14/bench.csv      (radview bench on fig. 9.14's scene)
   trade-cornell  assets/bench/cornell/bench.csv, .md (radview bench on the bundled solution)
+  trade-cornell-truth  assets/bench/cornell-truth/bench.csv, .md (the same, against the path
+                 tracer's true image)
   truth          tests/bench/results/truth/agreement.md (tests/truth/agreement_table.py)
   solution-noise tests/bench/results/solution_noise.md (tests/bench/solution_noise.py)
 
 tests/bench/regenerate_figures.sh runs those benchmarks and then this with --write. Without
 --write it checks: exit 1 naming each block that differs from what the files give (a test runs
-that), 2 for a missing file or block.
+that), 2 for a missing file, or a block no document holds.
 """
 import argparse
 import csv
@@ -146,6 +148,30 @@ def trade_cornell(root):
     return lines
 
 
+def trade_cornell_truth(root):
+    folder = os.path.join(root, "assets/bench/cornell-truth")
+    rows = read_rows(os.path.join(folder, "bench.csv"))
+    md = os.path.join(folder, "bench.md")
+    size = bench_header(md, r": (\d+x\d+), camera", "image size").group(1)
+    reference = bench_header(md, r"true image \(no solution used\) at each pixel's centre, (\d+) spp in (\d+) "
+                             r"independent runs, ([\d.]+) s; its noise \(RMS, over the compared pixels\) [^,]+ linear, "
+                             r"([\d.]+) display steps", "reference")
+    lines = ["At %s, the path tracer at %s spp in %s runs:" % (size, reference.group(1), reference.group(2)), "",
+             "| per pixel, by error | error, steps [95 %] | the solution's part | the reconstruction's part | time |",
+             "|---|---|---|---|---|"]
+    gl_rows = [r for r in per_pixel(rows) if r["solution_error_steps"]]
+    for r, tied in tie_groups(gl_rows, "error"):
+        name = label(r) + (" (%s tie with it)" % ", ".join(tied) if tied else "")
+        lines.append("| %s | %s | %s | %s | %s ms |" % (name, interval(r, "error"), interval(r, "solution"),
+                                                        interval(r, "reconstruction"), ms(r["frame_ms"])))
+    for r in per_pixel(rows):
+        if not r["solution_error_steps"]:  # the final gather's row: a CPU time, in seconds
+            lines.append("| %s, %s | %s | | | %.1f s |" % (r["method"], r["setting"].split(", ", 1)[-1],
+                                                            interval(r, "error"), float(r["frame_ms"]) / 1000))
+    lines.append("| reference: path tracer, noise %s steps | | | | %s s |" % (reference.group(4), reference.group(3)))
+    return lines
+
+
 def truth(root):
     path = os.path.join(root, "tests/bench/results/truth/agreement.md")
     if not os.path.isfile(path):
@@ -180,8 +206,9 @@ def solution_noise(root):
         return f.read().rstrip("\n").split("\n")
 
 
-BLOCKS = {"trade-fig9_14": trade_fig9_14, "trade-cornell": trade_cornell, "truth": truth,
-          "solution-noise": solution_noise}
+BLOCKS = {"trade-fig9_14": trade_fig9_14, "trade-cornell": trade_cornell, "trade-cornell-truth": trade_cornell_truth,
+          "truth": truth, "solution-noise": solution_noise}
+DOCS = ["README.md", "renderer/bench/README.md"]
 
 
 def main():
@@ -189,29 +216,36 @@ def main():
     p.add_argument("--write", action="store_true", help="rewrite README's blocks (default: check them)")
     p.add_argument("--root", default=os.path.normpath(os.path.join(os.path.dirname(__file__), "..", "..")))
     args = p.parse_args()
-    readme = os.path.join(args.root, "README.md")
-    with open(readme) as f:
-        text = f.read()
-    stale = []
-    for name, make in BLOCKS.items():
-        begin, end = "<!-- begin: figures %s -->\n" % name, "<!-- end: figures %s -->" % name
-        if begin not in text or end not in text:
-            fail("%s: no block '%s'" % (readme, name))
-        start = text.index(begin) + len(begin)
-        stop = text.index(end)
-        wanted = "\n".join(make(args.root)) + "\n"
-        if text[start:stop] != wanted:
-            stale.append(name)
-            text = text[:start] + wanted + text[stop:]
+    texts, stale, found = {}, [], set()
+    for doc in DOCS:
+        path = os.path.join(args.root, doc)
+        with open(path) as f:
+            text = f.read()
+        for name, make in BLOCKS.items():
+            begin, end = "<!-- begin: figures %s -->\n" % name, "<!-- end: figures %s -->" % name
+            if begin not in text or end not in text:
+                continue
+            found.add(name)
+            start = text.index(begin) + len(begin)
+            stop = text.index(end)
+            wanted = "\n".join(make(args.root)) + "\n"
+            if text[start:stop] != wanted:
+                stale.append("%s in %s" % (name, doc))
+                text = text[:start] + wanted + text[stop:]
+        texts[path] = text
+    missing = sorted(set(BLOCKS) - found)
+    if missing:
+        fail("no document holds the block%s %s" % ("s" if len(missing) > 1 else "", ", ".join(missing)))
     if args.write:
-        with open(readme, "w") as f:
-            f.write(text)
-        print("%s: %s" % (PROGRAM, "rewrote " + ", ".join(stale) if stale else "README.md already current"))
+        for path, text in texts.items():
+            with open(path, "w") as f:
+                f.write(text)
+        print("%s: %s" % (PROGRAM, "rewrote " + ", ".join(stale) if stale else "the docs are already current"))
         return 0
     if stale:
-        fail("README.md's figures differ from the result files in: %s (tests/bench/readme_figures.py --write "
+        fail("the docs' figures differ from the result files in: %s (tests/bench/readme_figures.py --write "
              "rewrites them)" % ", ".join(stale), 1)
-    print("%s: README.md's figures are the result files'" % PROGRAM)
+    print("%s: the docs' figures are the result files'" % PROGRAM)
     return 0
 
 

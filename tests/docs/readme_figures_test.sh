@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# README's measured tables are what the benchmarks' result files give: the check passes on the
+# The docs' measured tables are what the benchmarks' result files give: the check passes on the
 # repository, fails naming the block when a figure in README is changed by hand, and --write
 # puts it back (tests/bench/readme_figures.py).
 # usage: readme_figures_test.sh SOURCE_DIR WORK_DIR
@@ -8,8 +8,9 @@ source=$1 work=$2
 figures="$source/tests/bench/readme_figures.py"
 /usr/bin/python3 "$figures" --root "$source"
 
-rm -rf "$work" && mkdir -p "$work/assets" "$work/tests/bench"
+rm -rf "$work" && mkdir -p "$work/assets" "$work/tests/bench" "$work/renderer/bench"
 cp "$source/README.md" "$work/"
+cp "$source/renderer/bench/README.md" "$work/renderer/bench/"
 cp -r "$source/assets/bench" "$work/assets/"
 cp -r "$source/tests/bench/results" "$work/tests/bench/"
 # One figure of the Cornell box's table edited by hand: its first interval's opening bracket's number.
@@ -25,7 +26,7 @@ PY
 if /usr/bin/python3 "$figures" --root "$work" 2> "$work/check.err"; then
   echo "the check passed a README whose figure was edited by hand"; exit 1
 fi
-grep -q "differ from the result files in: trade-cornell" "$work/check.err"
+grep -q "differ from the result files in: trade-cornell in README.md" "$work/check.err"
 /usr/bin/python3 "$figures" --root "$work" --write > /dev/null
 /usr/bin/python3 "$figures" --root "$work"
 cmp "$work/README.md" "$source/README.md"
