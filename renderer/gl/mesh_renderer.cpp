@@ -4,7 +4,6 @@
 #include "core/strings.h"
 #include "gl/image_transfer.h"
 #include "gl/patch_vertices.h"
-#include "gl/vertex_arrays.h"
 #include "mesh/display_mesh.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -14,7 +13,7 @@
 
 namespace radview::gl {
 
-MeshRenderer::MeshRenderer() { createDisplayVertexArray(meshVao_, meshVbo_); }
+MeshRenderer::MeshRenderer() = default;
 
 MeshRenderer::~MeshRenderer() = default;
 
@@ -24,8 +23,7 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   const DisplayMesh& display = prepared.display;
-  storage_.upload(meshVbo_, display.triangles.data(), display.triangles.size() * sizeof(DisplayVertex));
-  triangleVertices_ = static_cast<GLsizei>(display.triangles.size());
+  raster_.setMesh(display.triangles, prepared.linearForQuadraticVertices);
   overlays_.setMesh(display);
   polygons_.setMesh(prepared.drawn, display.triangles);
   original_ = std::move(prepared.original);
@@ -34,7 +32,6 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   origin_ = prepared.origin;
   brightestLuminance_ = prepared.brightestLuminance;
   repairedDrawn_ = prepared.repairedTVertices;
-  linearForQuadraticVertices_ = GLsizei(prepared.linearForQuadraticVertices);
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = std::nullopt;
   netFor_ = std::nullopt;
 }
@@ -131,13 +128,15 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   const BezierEvaluation evaluation = bezierEvaluation(settings, camera);
   switch (methodInfo(method).gpu) {
     case GpuPass::Triangles:
-      drawTriangles(method, settings.perspectiveCorrect, clipFromWorld, triangleVertices_);
+      raster_.draw(method, settings.perspectiveCorrect, clipFromWorld, raster_.vertices());
       break;
     case GpuPass::ScanlinePolygons:
-      polygons_.draw(PolygonPass::Mode::Scanline, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      polygons_.draw(PolygonPass::Mode::Scanline, raster_.vertexArray(), raster_.vertices(), clipFromWorld, width,
+                     height);
       break;
     case GpuPass::BilinearPolygons:
-      polygons_.draw(PolygonPass::Mode::Bilinear, meshVao_, triangleVertices_, clipFromWorld, width, height);
+      polygons_.draw(PolygonPass::Mode::Bilinear, raster_.vertexArray(), raster_.vertices(), clipFromWorld, width,
+                     height);
       break;
     case GpuPass::LagrangePieces:
       if (isQuadraticPerPixel(method, evaluation))
@@ -155,26 +154,16 @@ void MeshRenderer::drawRadiosity(Method method, const RenderSettings& settings, 
   }
 }
 
-void MeshRenderer::drawTriangles(Method method, bool perspectiveCorrect, const glm::mat4& clipFromWorld,
-                                 GLsizei vertices) {
-  meshProgram_.set("clipFromWorld", clipFromWorld);
-  meshProgram_.set("method", static_cast<int>(method));
-  meshProgram_.set("perspectiveCorrect", perspectiveCorrect ? 1 : 0);
-  meshProgram_.use();
-  glBindVertexArray(meshVao_);
-  glDrawArrays(GL_TRIANGLES, 0, vertices);
-}
-
 // Linear elements are linear under the quadratic method too: Gouraud's triangles,
 // perspective-correct; then the 6-node triangles' pieces and the serendipity quads.
 void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width,
                                          int height, bool comparison) {
-  drawTriangles(Method::Gouraud, true, clipFromWorld, linearForQuadraticVertices_);
+  raster_.draw(Method::Gouraud, true, clipFromWorld, raster_.linearForQuadraticVertices());
   BezierPass& pass = comparison && patchesFor_ != PiecesKey::quadraticTriangles() ? comparisonPass_ : bezierPass_;
   if (!pass.vertices().empty()) pass.draw(clipFromWorld, evaluation);
   polygons_.drawSerendipity(clipFromWorld, width, height);
   const size_t pieces =
-      size_t(linearForQuadraticVertices_ + polygons_.serendipityVertices()) / 3 + pass.vertices().size() / 3;
+      size_t(raster_.linearForQuadraticVertices() + polygons_.serendipityVertices()) / 3 + pass.vertices().size() / 3;
   statistics_ = {pieces, 3, 1.0, pieces};
 }
 

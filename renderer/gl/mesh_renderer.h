@@ -17,6 +17,7 @@
 #include "gl/overlay_pass.h"
 #include "gl/polygon_pass.h"
 #include "gl/prepared_mesh.h"
+#include "gl/raster_pass.h"
 #include "gl/render_settings.h"
 #include "gl/render_targets.h"
 #include "gl/shader_program.h"
@@ -85,7 +86,7 @@ class MeshRenderer {
   // GPU time of the last render(), in ms, waiting for it to finish if need be: what a benchmark
   // times, frame by frame. Throws Error before the first render.
   double lastFrameGpuMs() const { return timer_.lastMs(); }
-  size_t triangleCount() const { return triangleVertices_ / 3; }
+  size_t triangleCount() const { return size_t(raster_.vertices() / 3); }
   // The Bezier pieces of the last quadratic or C1 frame: patches, draws, levels, triangles (for
   // the C1 methods per pixel: the element triangles of the deferred pass, at level 1).
   const TessellationStatistics& tessellationStatistics() const { return statistics_; }
@@ -115,7 +116,6 @@ class MeshRenderer {
   // a method is drawn (MethodInfo::gpu):
   void drawRadiosity(Method method, const RenderSettings& settings, const Camera& camera,
                      const glm::mat4& clipFromWorld, int width, int height, bool comparison, bool depthOnly);
-  void drawTriangles(Method method, bool perspectiveCorrect, const glm::mat4& clipFromWorld, GLsizei vertices);
   void drawQuadraticPerPixel(const BezierEvaluation& evaluation, const glm::mat4& clipFromWorld, int width, int height,
                              bool comparison);
   void drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld, GLuint framebuffer,
@@ -133,7 +133,7 @@ class MeshRenderer {
   // pixel, on the flat surface.
   static bool isDeferred(Method method, const BezierEvaluation& evaluation);
   // Whether `method` is the quadratic one per pixel on the flat surface: Gouraud's triangles
-  // for its linear elements (the first linearForQuadraticVertices_ of the mesh's), the Bezier
+  // for its linear elements (RasterPass::linearForQuadraticVertices), the Bezier
   // pass for its 6-node triangles alone, the polygon pass for its serendipity quads.
   static bool isQuadraticPerPixel(Method method, const BezierEvaluation& evaluation);
   // The Bezier pass's settings for this frame.
@@ -142,10 +142,7 @@ class MeshRenderer {
   // Storage of the mesh's buffers, declared first: freed after the buffers that use it.
   BufferStorage storage_;
   RenderTargets targets_;
-  ShaderProgram meshProgram_{{"mesh.vert", "mesh.frag"}};
-  GlObject meshVao_, meshVbo_;
-  GLsizei triangleVertices_ = 0;
-  GLsizei linearForQuadraticVertices_ = 0;
+  RasterPass raster_{storage_};     // flat and Gouraud, and the triangles the polygon pass draws over
   PolygonPass polygons_{storage_};  // scanline Gouraud, bilinear, serendipity quads
   OverlayPass overlays_{storage_};
   // The method's pieces, and the comparison method's when it is a Bezier method (its own
