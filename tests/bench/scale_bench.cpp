@@ -117,6 +117,7 @@ RenderRun renderRun(double elementSize, const char* method, int width, int heigh
                                    RADVIEW_BINARY,
                                    "render",
                                    std::string(RADVIEW_SOURCE_DIR) + "/assets/cornell_box.gltf",
+                                   "--direct-only",  // the mesh lit as measureFrames' is, not solved
                                    "--element-size",
                                    elementSizeText,
                                    "--size",
