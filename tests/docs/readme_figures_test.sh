@@ -13,12 +13,12 @@ cp "$source/README.md" "$work/"
 cp "$source/renderer/bench/README.md" "$work/renderer/bench/"
 cp -r "$source/assets/bench" "$work/assets/"
 cp -r "$source/tests/bench/results" "$work/tests/bench/"
-# One figure of the Cornell box's table edited by hand: its first interval's opening bracket's number.
+# One figure of fig. 9.14's table edited by hand: the first estimate before an interval.
 python3 - "$work/README.md" <<'PY'
 import re, sys
 path = sys.argv[1]
 text = open(path).read()
-start = text.index("<!-- begin: figures trade-cornell -->")
+start = text.index("<!-- begin: figures trade-fig9_14 -->")
 m = re.compile(r"\| ([\d.]+) \[").search(text, start)
 text = text[:m.start(1)] + "9" + m.group(1) + text[m.end(1):]
 open(path, "w").write(text)
@@ -26,7 +26,7 @@ PY
 if /usr/bin/python3 "$figures" --root "$work" 2> "$work/check.err"; then
   echo "the check passed a README whose figure was edited by hand"; exit 1
 fi
-grep -q "differ from the result files in: trade-cornell in README.md" "$work/check.err"
+grep -q "differ from the result files in: trade-fig9_14 in README.md" "$work/check.err"
 /usr/bin/python3 "$figures" --root "$work" --write > /dev/null
 /usr/bin/python3 "$figures" --root "$work"
 cmp "$work/README.md" "$source/README.md"
