@@ -5,7 +5,10 @@
 namespace radview {
 
 void addSolverOptions(CLI::App& command, SolveSettings& s) {
-  command.add_option("--samples", s.solver.samples, "Solve: shooter samples per node and shot")
+  command
+      .add_option("--samples", s.solver.samples,
+                  "Solve: shooter samples per node and shot, one stratified batch (more where the shooter is seen "
+                  "in part: --max-samples)")
       ->check(CLI::Range(1, kMaxSolverSamples))
       ->capture_default_str();
   command
