@@ -1,5 +1,6 @@
 #include "app/commands.h"
 #include "geom/polygon.h"
+#include "mesh/standard_errors.h"
 #include "mesh/topology.h"
 #include "solve/viewed_file.h"
 
@@ -46,6 +47,11 @@ void printMesh(const RadiosityMesh& mesh) {
   // indistinguishable from an untagged one, so only the discontinuities are counted).
   std::cout << "discontinuity edges: " << toString(Continuity::Cm1) << ' ' << topology.countEdges(Continuity::Cm1)
             << ", " << toString(Continuity::C0) << ' ' << topology.countEdges(Continuity::C0) << '\n';
+  if (!mesh.hasStandardErrors) return;
+  const StandardErrorSummary errors = summariseStandardErrors(mesh);
+  std::cout << "standard errors (luminance, " << errors.nodes << " nodes of lit surfaces, mean B " << errors.meanB
+            << "): median " << errors.median << ", 99th percentile " << errors.p99 << ", largest " << errors.largest
+            << "; " << errors.uncertain << " nodes above 0\n";
 }
 
 }  // namespace

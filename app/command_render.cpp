@@ -11,6 +11,7 @@
 #include "interp/method_registry.h"
 #include "interp/tessellation_level.h"
 #include "scene/camera_presets.h"
+#include "mesh/standard_errors.h"
 #include "solve/viewed_file.h"
 
 #include <algorithm>
@@ -55,6 +56,7 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display) {
   if (display.controlNet && display.surface == 0.0) throw Error("--control-net needs --surface");
   settings.controlNet = display.controlNet;
   settings.cloughTocher = cloughTocherVariantFromName(display.variant);
+  settings.thinPlate = thinPlateSettingsFromText(display.smoothing);
   settings.tessellation = parseTessellation(display.tessellation);
   if (!(display.tolerance >= 0.01 && display.tolerance <= 100.0))
     throw Error("--tolerance " + std::to_string(display.tolerance) + ": expected 0.01 .. 100 8-bit steps");
@@ -83,6 +85,12 @@ int parseTessellation(const std::string& text) {
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out, const std::string& linearOut) {
   const gl::RenderSettings settings = settingsFrom(display);
+  if (settings.view == gl::DisplayView::StandardError && !viewed.mesh.hasStandardErrors)
+    throw Error(viewed.file.path, viewed.file.isSolution
+                                      ? "has no standard errors to show (--view standard-error): its solver did "
+                                        "not estimate them"
+                                      : "has no standard errors to show (--view standard-error) when drawn with "
+                                        "--direct-only, which casts no rays");
   const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
   ReferenceImage reference;
   if (!display.reference.empty()) {
@@ -112,6 +120,13 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
         display.method.c_str(), against.c_str(), d.pixels, d.rmse * 255.0, d.maxAbs * 255.0, d.meanSigned * 255.0,
         display.differenceScale, display.differenceScale);
   }
+  if (settings.view == gl::DisplayView::StandardError) {
+    const StandardErrorSummary errors = summariseStandardErrors(viewed.mesh);
+    std::printf(
+        "standard errors of B (luminance, %zu nodes, mean B %.4g): median %.4g, 99th percentile %.4g, largest %.4g; "
+        "colour bar 0 .. %.4g 8-bit steps of displayed luminance\n",
+        errors.nodes, errors.meanB, errors.median, errors.p99, errors.largest, display.differenceScale);
+  }
 }
 
 int runRender(const RenderOptions& options) {
@@ -129,7 +144,8 @@ int runRender(const RenderOptions& options) {
   if (tracer) {
     checkRayTracedOptions(options.display, options.gather);  // before a scene's solve, not after
     checkImageMemory(options.size, width, height, kGatherBytesPerPixel, "the " + rayTracerInfo(*tracer).noun);
-  } else if (options.display.view == "difference" || !options.linearOut.empty())
+  } else if (options.display.view == "difference" || options.display.view == "standard-error" ||
+             !options.linearOut.empty())
     checkImageMemory(options.size, width, height, kComparisonBytesPerPixel, "a render with its comparison");
   else
     checkImageMemory(options.size, width, height, kRenderBytesPerPixel, "the render");

@@ -66,6 +66,7 @@ std::unique_ptr<ProgressiveImage> finalGather(const ViewedFile& viewed, const Di
   GatherSettings settings;
   settings.interpolant = methodFromName(options.interpolant);
   settings.interpolantOptions.cloughTocher = cloughTocherVariantFromName(display.variant);
+  settings.interpolantOptions.thinPlate = thinPlateSettingsFromText(display.smoothing);
   settings.seed = options.seed;
   settings.width = width;
   settings.height = height;

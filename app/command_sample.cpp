@@ -117,6 +117,7 @@ int runSample(const SampleOptions& options) {
     throw Error("--diagonal '" + options.diagonal + "': expected 02 or 13");
   interpolantOptions.diagonal = options.diagonal == "13" ? QuadDiagonal::D13 : QuadDiagonal::D02;
   interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
+  interpolantOptions.thinPlate = thinPlateSettingsFromText(options.smoothing);
   interpolantOptions.useStoredGradients = !options.estimateGradients;
 
   const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light, nullptr,
@@ -166,13 +167,23 @@ int runSample(const SampleOptions& options) {
                   std::to_string(points[i].element) + ") is " + std::to_string(points[i].distance) +
                   " away, more than --max-distance " + std::to_string(maxDistance));
   const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
+  // The standard errors between the nodes: linear (Gouraud), as the standard-error view draws them.
+  std::optional<RadiosityMesh> errors;
+  std::unique_ptr<Interpolant> errorInterpolant;
+  if (options.standardError) {
+    if (!mesh.hasStandardErrors)
+      throw Error(options.file, "has no standard errors for --standard-error (its solver did not estimate them)");
+    errors = mesh;
+    for (Node& node : errors->nodes) node.B = node.standardError;
+    errorInterpolant = makeInterpolant(*errors, Method::Gouraud, interpolantOptions);
+  }
 
   std::printf(
       "# radview sample %s --method %s: element x y z distance B_r B_g B_b "
-      "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz\n",
-      options.file.c_str(), methodName(method).c_str());
+      "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz%s\n",
+      options.file.c_str(), methodName(method).c_str(), options.standardError ? " SE_r SE_g SE_b" : "");
   // Evaluated and formatted on every core, a block of lines at a time, written in order.
-  constexpr size_t kLine = 512, kBlock = 16384;  // a line is at most 10 + 18 * 25 characters
+  constexpr size_t kLine = 640, kBlock = 16384;  // a line is at most 10 + 21 * 25 characters
   std::vector<char> lines(kLine * std::min(kBlock, points.size()));
   std::vector<size_t> lengths(std::min(kBlock, points.size()));
   for (size_t first = 0; first < points.size(); first += kBlock) {
@@ -187,6 +198,10 @@ int runSample(const SampleOptions& options) {
         out = appendNumber(out, v, ' ');
       for (const Vec3& g : s.gradient)
         for (int k = 0; k < 3; ++k) out = appendNumber(out, g[k], ' ');
+      if (errorInterpolant) {
+        const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
+        for (int k = 0; k < 3; ++k) out = appendNumber(out, error[k], ' ');
+      }
       out[-1] = '\n';
       lengths[i] = size_t(out - begin);
     });

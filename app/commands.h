@@ -29,6 +29,7 @@ struct DisplayOptions {
   double surface = 0.0;                // radiosity surface (fig. 9.13): its height as a fraction of the scene; 0 off
   bool controlNet = false;             // with --surface: the Bezier control net
   std::string variant = "affine";      // clough-tocher: affine or book
+  std::string smoothing = "auto";      // thin-plate: auto, by cross-validation, or lambda
   std::string tessellation = "per-pixel";  // quadratic and C1 methods: per-pixel, adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
   double elementSize = 0.0;            // scenes only; 0 picks a default
@@ -79,9 +80,11 @@ struct SampleOptions {
   std::string camera;                  // scanline-gouraud: the view, as render --camera
   std::string size = "1024x768";       // scanline-gouraud: the view's image size
   std::string variant = "affine";      // clough-tocher: affine or book
+  std::string smoothing = "auto";      // thin-plate: auto, by cross-validation, or lambda
   std::string tessellation = "per-pixel";  // quadratic and C1 methods: per-pixel, adaptive, or 1..64
   double tolerance = 0.5;              // adaptive tessellation: display error, in 8-bit steps
   bool estimateGradients = false;      // ignore gradients stored in the file
+  bool standardError = false;          // also print the solver's standard error of B, interpolated linearly
   double maxDistance = -1.0;           // world points farther from every element are errors
   double elementSize = 0.0;
   ImportOptions import;

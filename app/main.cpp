@@ -30,6 +30,9 @@ using namespace radview;
 constexpr const char* kFileHelp =
     "A glTF scene (.gltf/.glb), a radview solution file, or another tool's mesh with vertex colours "
     "(.ply, .obj, glTF with COLOR_0, ...)";
+constexpr const char* kSmoothingHelp =
+    "thin-plate: lambda, the weight of bending against the misfit to the nodal values (0: the values "
+    "themselves), or auto: chosen per region by generalised cross-validation";
 
 // --view's help: every view's name and what it shows (gl/display_views.h).
 std::string displayViewHelp() {
@@ -72,7 +75,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
   command
       .add_option("--difference-scale", d.differenceScale,
                   "--view difference: the difference, in 8-bit steps of displayed luminance, at the ends of "
-                  "the colour bar")
+                  "the colour bar; --view standard-error: the standard error at its top")
       ->capture_default_str();
   command.add_flag("--discontinuities", d.discontinuities,
                    "Overlay discontinuity edges: C-1 (value jumps) red, C0 (derivative jumps) yellow");
@@ -111,6 +114,7 @@ void addDisplayOptions(CLI::App& command, DisplayOptions& d, const std::vector<s
                   "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book (edge normal)")
       ->check(CLI::IsMember({"affine", "book"}))
       ->capture_default_str();
+  command.add_option("--smoothing", d.smoothing, kSmoothingHelp)->capture_default_str();
   command
       .add_option("--element-size", d.elementSize,
                   "Scenes: edge length of the uniform mesh's elements (default: bounds diagonal / 40)")
@@ -209,6 +213,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"02", "13"}))
       ->capture_default_str();
   sampleCommand
+      ->add_option("--smoothing", sample.smoothing, kSmoothingHelp)
+      ->capture_default_str();
+  sampleCommand
       ->add_option("--variant", sample.variant,
                    "clough-tocher: cross-boundary direction, affine (centroid to centroid) or book "
                    "(edge normal)")
@@ -216,6 +223,9 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   sampleCommand->add_flag("--estimate-gradients", sample.estimateGradients,
                           "Estimate vertex gradients even when the file stores them");
+  sampleCommand->add_flag("--standard-error", sample.standardError,
+                          "Also print the standard error of B the solver estimated (SE_r SE_g SE_b), "
+                          "interpolated linearly between the nodes");
   sampleCommand
       ->add_option("--max-distance", sample.maxDistance,
                    "World points farther than this from every element are errors (default: 1e-3 of "

@@ -129,6 +129,8 @@ struct ViewerWork {
     state.undoSteps = 0;
     state.pickedEdge.reset();
     state.pickedDescription.clear();
+    if (state.settings.view == gl::DisplayView::StandardError && !state.viewed.mesh.hasStandardErrors)
+      state.settings.view = gl::DisplayView::Normal;
   }
 
   // The edited mesh to the renderer; the pieces and the gather see a new version.

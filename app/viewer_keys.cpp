@@ -45,7 +45,7 @@ const std::vector<ViewerKey>& viewerKeys() {
       {{GLFW_KEY_P}, false, "P", "Gouraud perspective-correct or in screen space",
        [](S& s) { toggle(s.settings.perspectiveCorrect); }},
       {{GLFW_KEY_C}, false, "C", "the next view: " + cycledViewNames(),
-       [](S& s) { s.settings.view = gl::nextCycledView(s.settings.view); }},
+       [](S& s) { s.settings.view = gl::nextCycledView(s.settings.view, s.viewed.mesh.hasStandardErrors); }},
       {{GLFW_KEY_E}, false, "E", "element edges", [](S& s) { toggle(s.settings.elementEdges); }},
       {{GLFW_KEY_D}, false, "D", "discontinuity edges", [](S& s) { toggle(s.settings.discontinuityEdges); }},
       {{GLFW_KEY_T}, false, "T", "T-vertices", [](S& s) { toggle(s.settings.tVertices); }},

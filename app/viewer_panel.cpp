@@ -6,6 +6,7 @@
 #include "app/examples.h"
 #include "interp/method_registry.h"
 #include "mesh/display_mesh.h"
+#include "mesh/standard_errors.h"
 
 #include <imgui.h>
 
@@ -77,6 +78,34 @@ void drawDifferenceControls(ViewerState& state) {
   if (ImGui::SliderFloat("Bar ends, 8-bit steps", &steps, 0.25f, 64.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
     s.differenceScale = steps / 255.0;
   if (!state.difference.empty()) ImGui::TextWrapped("%s", state.difference.c_str());
+}
+
+// The thin-plate spline's lambda: by cross-validation per region, or one given (--smoothing).
+void drawThinPlateControls(ThinPlateSettings& thinPlate) {
+  bool automatic = !thinPlate.lambda;
+  if (ImGui::Checkbox("Lambda by cross-validation", &automatic)) thinPlate.lambda = automatic ? std::nullopt
+                                                                                              : std::optional(1e-3);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Per region between C-1 edges, the lambda generalised cross-validation prefers "
+                      "(--smoothing auto); off: one lambda for every region");
+  if (thinPlate.lambda) {
+    float lambda = float(*thinPlate.lambda);
+    ImGui::PushItemWidth(200);
+    if (ImGui::SliderFloat("Lambda", &lambda, 1e-9f, 1e3f, "%.2e", ImGuiSliderFlags_Logarithmic))
+      thinPlate.lambda = double(lambda);
+    ImGui::PopItemWidth();
+  }
+}
+
+// The standard-error view's scale, and what the solver estimated, in numbers.
+void drawStandardErrorControls(ViewerState& state) {
+  float steps = float(state.settings.differenceScale * 255.0);
+  if (ImGui::SliderFloat("Bar top, 8-bit steps", &steps, 0.25f, 64.0f, "%.2f", ImGuiSliderFlags_Logarithmic))
+    state.settings.differenceScale = steps / 255.0;
+  if (!state.viewed.mesh.hasStandardErrors) return;
+  const StandardErrorSummary errors = summariseStandardErrors(state.viewed.mesh);
+  ImGui::TextWrapped("Luminance: median %.3g, 99th percentile %.3g, largest %.3g (mean B %.3g); %zu of %zu nodes above 0",
+                     errors.median, errors.p99, errors.largest, errors.meanB, errors.uncertain, errors.nodes);
 }
 
 // The final gather (C&W §9.3.1) shown in place of the GL method: B^ under its integral, where
@@ -167,15 +196,18 @@ void drawContinuityControls(ViewerState& state) {
 // Labels beside the colour bar the false-colour views draw at the window's right edge.
 void drawColourBarLabels(const ViewerState& state) {
   const gl::DisplayView view = state.settings.view;
-  if (view != gl::DisplayView::Value && view != gl::DisplayView::Difference) return;
+  if (view != gl::DisplayView::Value && view != gl::DisplayView::Difference &&
+      view != gl::DisplayView::StandardError)
+    return;
   const ImVec2 size = ImGui::GetIO().DisplaySize;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const double top = view == gl::DisplayView::Value ? 1.0 : state.settings.differenceScale * 255.0;
-  const double bottom = view == gl::DisplayView::Value ? 0.0 : -top;
+  const double bottom = view == gl::DisplayView::Difference ? -top : 0.0;
   for (int i = 0; i <= 4; ++i) {
     const double t = i / 4.0;
     char label[32];
-    std::snprintf(label, sizeof label, "%+.3g", bottom + (top - bottom) * t);
+    std::snprintf(label, sizeof label, view == gl::DisplayView::Difference ? "%+.3g" : "%.3g",
+                  bottom + (top - bottom) * t);
     const float y = size.y * float(1.0 - t);
     const ImVec2 extent = ImGui::CalcTextSize(label);
     const float yText = std::clamp(y - extent.y * 0.5f, 0.0f, size.y - extent.y);
@@ -272,6 +304,7 @@ void drawPanel(ViewerState& state) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Edge normal, as the text reads; off: centroid to centroid (affine invariant, default)");
   }
+  if (state.settings.method == Method::ThinPlate) drawThinPlateControls(state.settings.thinPlate);
   if (state.settings.method == Method::ScanlineGouraud) ImGui::TextDisabled("depends on the view: press R (fig. 9.8)");
   if (state.settings.method == Method::Bilinear) ImGui::TextDisabled("exact per pixel");
   if (methodInfo(state.settings.method).bezierPieces()) {
@@ -317,8 +350,13 @@ void drawPanel(ViewerState& state) {
   ImGui::PushItemWidth(200);
   if (ImGui::BeginCombo("View [C]", gl::displayViewInfo(state.settings.view).label.c_str())) {
     for (const gl::DisplayViewInfo& info : gl::displayViewRegistry()) {
-      if (ImGui::Selectable(info.label.c_str(), info.view == state.settings.view)) state.settings.view = info.view;
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (--view %s)", info.summary.c_str(), info.name.c_str());
+      const bool lacking = info.view == gl::DisplayView::StandardError && !state.viewed.mesh.hasStandardErrors;
+      const ImGuiSelectableFlags flags = lacking ? ImGuiSelectableFlags_Disabled : 0;
+      if (ImGui::Selectable(info.label.c_str(), info.view == state.settings.view, flags))
+        state.settings.view = info.view;
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s (--view %s)%s", info.summary.c_str(), info.name.c_str(),
+                          lacking ? "; this mesh has none (radview's solver estimates them)" : "");
     }
     ImGui::EndCombo();
   }
@@ -329,6 +367,7 @@ void drawPanel(ViewerState& state) {
   }
   if (state.settings.view == gl::DisplayView::Isolines) ImGui::SliderInt("Levels", &state.settings.isolineCount, 2, 64);
   if (state.settings.view == gl::DisplayView::Difference) drawDifferenceControls(state);
+  if (state.settings.view == gl::DisplayView::StandardError) drawStandardErrorControls(state);
   ImGui::PopItemWidth();
   if (state.settings.view == gl::DisplayView::Value)
     ImGui::TextDisabled("colour bar (right edge): displayed luminance 0 .. 1");

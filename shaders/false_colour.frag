@@ -9,6 +9,7 @@ const int VIEW_VALUE = 1;
 const int VIEW_GRADIENT = 2;
 const int VIEW_ISOLINES = 3;
 const int VIEW_DIFFERENCE = 4;
+const int VIEW_STANDARD_ERROR = 5;
 
 uniform sampler2D linearRadiosity;
 uniform float exposureScale;
@@ -22,6 +23,10 @@ uniform int isolineCount;     // isolines: levels across the display range [0, 1
 uniform sampler2D comparisonRadiosity;
 uniform bool comparisonLinear;
 uniform float differenceScale;
+// Standard error: the solution's standard errors of B, linear, drawn as the mesh is (Gouraud), in
+// comparisonRadiosity at this view's size; shown as how far B one standard error higher moves
+// the displayed luminance, 0 .. differenceScale on the colour scale (noise in what is seen: none
+// where the display saturates).
 
 layout(location = 0) out vec4 display;
 
@@ -54,9 +59,10 @@ float shown(ivec2 p, out bool covered) {
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   ivec2 size = textureSize(linearRadiosity, 0);
-  if ((view == VIEW_VALUE || view == VIEW_DIFFERENCE) && p.x >= size.x - 16) {  // the colour bar
-    float t = gl_FragCoord.y / float(size.y);  // value: bottom 0, top 1; difference: -scale .. +scale
-    vec3 bar = view == VIEW_VALUE ? colourScale(t) : divergingScale(2.0 * t - 1.0);
+  if ((view == VIEW_VALUE || view == VIEW_DIFFERENCE || view == VIEW_STANDARD_ERROR) && p.x >= size.x - 16) {
+    // The colour bar. Value: bottom 0, top 1; difference: -scale .. +scale; standard error: 0 .. scale.
+    float t = gl_FragCoord.y / float(size.y);
+    vec3 bar = view == VIEW_DIFFERENCE ? divergingScale(2.0 * t - 1.0) : colourScale(t);
     display = vec4(p.x < size.x - 12 ? background : bar, 1.0);
     return;
   }
@@ -77,6 +83,16 @@ void main() {
     }
     float shownC = luminance(comparisonLinear ? toneMap(C.rgb, exposureScale) : C.rgb);
     display = vec4(divergingScale((v - shownC) / differenceScale), 1.0);
+    return;
+  }
+  if (view == VIEW_STANDARD_ERROR) {
+    vec4 error = texelFetch(comparisonRadiosity, p, 0);
+    if (!finiteAndCovered(error)) {
+      display = vec4(background, 1.0);
+      return;
+    }
+    float higher = luminance(toneMap(B.rgb + max(error.rgb, vec3(0.0)), exposureScale));
+    display = vec4(colourScale((higher - v) / differenceScale), 1.0);
     return;
   }
   if (view == VIEW_VALUE) {

@@ -11,6 +11,7 @@ find_package(Boost 1.74 CONFIG REQUIRED)
 find_package(embree 3 CONFIG REQUIRED)
 find_package(assimp 5 CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)
+find_package(Eigen3 3.3 CONFIG REQUIRED)
 pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET epoxy)
 pkg_check_modules(imgui REQUIRED IMPORTED_TARGET imgui)
 

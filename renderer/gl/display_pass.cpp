@@ -22,7 +22,7 @@ void DisplayPass::draw(const RenderSettings& settings, GLuint linear, GLuint com
     program.set("gradientScale", float(settings.gradientScale));
     program.set("isolineCount", settings.isolineCount);
   }
-  if (settings.view == DisplayView::Difference) {
+  if (settings.view == DisplayView::Difference || settings.view == DisplayView::StandardError) {
     program.set("comparisonRadiosity", 1);
     program.set("comparisonLinear", comparison != 0 || reference_.linear ? 1 : 0);
     program.set("differenceScale", float(settings.differenceScale));

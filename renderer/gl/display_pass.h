@@ -1,8 +1,8 @@
 #pragma once
 // Pass 2 of a frame: pass 1's linear radiosity into display colour, in a full-screen triangle:
 // exposure and the sRGB tone map, or a false-colour view (display_views.h): the value, its
-// gradient, isolines, or the signed difference from the comparison method's image or from a
-// reference image.
+// gradient, isolines, the signed difference from the comparison method's image or from a
+// reference image, or the standard errors' effect on the display.
 #include "core/image.h"
 #include "gl/gl_object.h"
 #include "gl/render_settings.h"
@@ -21,7 +21,8 @@ class DisplayPass {
   const ReferenceImage& referenceImage() const { return reference_; }
 
   // Into the bound framebuffer, from the texture `linear`; a difference view subtracts
-  // `comparison` (the comparison method's linear image), or the reference image where it is 0.
+  // `comparison` (the comparison method's linear image), or the reference image where it is 0;
+  // the standard-error view reads the standard errors' linear image from `comparison`.
   void draw(const RenderSettings& settings, GLuint linear, GLuint comparison) const;
 
  private:

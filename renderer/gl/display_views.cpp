@@ -15,6 +15,8 @@ const std::vector<DisplayViewInfo>& displayViewRegistry() {
       {DisplayView::Isolines, "isolines", "Isolines", "the normal display with lines between luminance levels", true},
       {DisplayView::Difference, "difference", "Difference",
        "displayed luminance minus another method's or a reference image's, in 8-bit steps", false},
+      {DisplayView::StandardError, "standard-error", "Standard error",
+       "the solver's standard error of each nodal B, interpolated linearly, in displayed 8-bit steps", true},
   };
   return registry;
 }
@@ -33,11 +35,11 @@ DisplayView displayViewFromName(const std::string& name) {
   throw Error("unknown display view '" + name + "' (expected one of " + joined(displayViewNames()) + ")");
 }
 
-DisplayView nextCycledView(DisplayView view) {
+DisplayView nextCycledView(DisplayView view, bool hasStandardErrors) {
   const std::vector<DisplayViewInfo>& views = displayViewRegistry();
   for (size_t step = 1; step <= views.size(); ++step) {
     const DisplayViewInfo& next = views[(size_t(view) + step) % views.size()];
-    if (next.cycled) return next.view;
+    if (next.cycled && (hasStandardErrors || next.view != DisplayView::StandardError)) return next.view;
   }
   return view;
 }

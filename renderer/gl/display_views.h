@@ -13,6 +13,7 @@ enum class DisplayView : int {
   GradientMagnitude,  // of the displayed luminance per pixel: Mach bands are jumps in it
   Isolines,           // the normal display with lines between luminance levels
   Difference,         // displayed luminance minus a comparison's: another method, or an image
+  StandardError,      // the solver's standard error of B, in displayed 8-bit steps
 };
 
 struct DisplayViewInfo {
@@ -26,10 +27,11 @@ struct DisplayViewInfo {
 // In enum order.
 const std::vector<DisplayViewInfo>& displayViewRegistry();
 const DisplayViewInfo& displayViewInfo(DisplayView view);
-// "normal", "value", "gradient", "isolines", "difference"
+// "normal", "value", "gradient", "isolines", "difference", "standard-error"
 std::vector<std::string> displayViewNames();
 DisplayView displayViewFromName(const std::string& name);  // throws Error naming the known names
-// The view after `view` among those the C key cycles through.
-DisplayView nextCycledView(DisplayView view);
+// The view after `view` among those the C key cycles through; the standard-error view only
+// for a mesh that has them.
+DisplayView nextCycledView(DisplayView view, bool hasStandardErrors);
 
 }  // namespace radview::gl

@@ -13,6 +13,15 @@
 
 namespace radview::gl {
 
+namespace {
+
+// The pieces `method` is drawn from under `settings`.
+PiecesKey piecesKey(Method method, const RenderSettings& settings) {
+  return {method, settings.cloughTocher, false, settings.thinPlate};
+}
+
+}  // namespace
+
 MeshRenderer::MeshRenderer() = default;
 
 MeshRenderer::~MeshRenderer() = default;
@@ -24,6 +33,8 @@ void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   const DisplayMesh& display = prepared.display;
   raster_.setMesh(display.triangles, prepared.linearForQuadraticVertices);
+  errorRaster_.setMesh({}, 0);
+  errorsUploaded_ = false;
   overlays_.setMesh(display);
   polygons_.setMesh(prepared.drawn, display.triangles);
   original_ = std::move(prepared.original);
@@ -48,10 +59,10 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEva
   const bool deferred = isDeferred(settings.method, evaluation);
   const bool quadraticTriangles = isQuadraticPerPixel(settings.method, evaluation);
   const PiecesKey wanted =
-      quadraticTriangles ? PiecesKey::quadraticTriangles() : PiecesKey{settings.method, settings.cloughTocher};
+      quadraticTriangles ? PiecesKey::quadraticTriangles() : piecesKey(settings.method, settings);
   if ((deferred ? deferredFor_ : patchesFor_) == wanted && (!settings.splitLines || splitFor_ == wanted)) return;
   if (deferred) {
-    adoptPieces(prepareDeferred(mesh_, topology_, settings.method, settings.cloughTocher), settings.splitLines);
+    adoptPieces(prepareDeferred(mesh_, topology_, wanted), settings.splitLines);
     return;
   }
   // One of the two passes holds the method's pieces at a time, the other's freed first: memory
@@ -60,23 +71,21 @@ void MeshRenderer::uploadPatches(const RenderSettings& settings, const BezierEva
   deferredFor_ = std::nullopt;
   std::vector<glm::vec3> split;
   bezierPass_.upload(quadraticTriangles ? quadraticTriangleVertices(*mesh_)
-                                        : pieceVertices(*mesh_, topology_, settings.method, settings.cloughTocher,
-                                                        settings.splitLines ? &split : nullptr),
+                                        : pieceVertices(*mesh_, topology_, wanted, settings.splitLines ? &split : nullptr),
                      pieceDegree(methodInfo(settings.method).gpu));
   patchesFor_ = wanted;
   uploadSplit(split, settings.splitLines ? std::optional(wanted) : std::nullopt);
 }
 
 std::function<DeferredSetup()> MeshRenderer::piecesSetup(const RenderSettings& settings) const {
-  const bool flatSurface = settings.surfaceHeight == 0.0 || settings.view == DisplayView::Difference;
-  const PiecesKey key{settings.method, settings.cloughTocher};
+  const bool flatSurface = settings.surfaceHeight == 0.0 || settings.view == DisplayView::Difference ||
+                           settings.view == DisplayView::StandardError;
+  const PiecesKey key = piecesKey(settings.method, settings);
   const bool built = deferredFor_ == key && (!settings.splitLines || splitFor_ == key);
   if (built || hasShownImage() || settings.repairTVertices != repairedDrawn_ || settings.tessellation != 0 ||
       !flatSurface || !resolvesDeferred(methodInfo(settings.method).gpu))
     return {};
-  return [mesh = mesh_, topology = topology_, method = settings.method, variant = settings.cloughTocher] {
-    return prepareDeferred(mesh, topology, method, variant);
-  };
+  return [mesh = mesh_, topology = topology_, key] { return prepareDeferred(mesh, topology, key); };
 }
 
 void MeshRenderer::adoptPieces(const DeferredSetup& setup, bool splitLines) {
@@ -170,7 +179,7 @@ void MeshRenderer::drawQuadraticPerPixel(const BezierEvaluation& evaluation, con
 void MeshRenderer::drawDeferred(Method method, const RenderSettings& settings, const glm::mat4& clipFromWorld,
                                 GLuint framebuffer, bool comparison, bool depthOnly) {
   // The comparison shares the method's pieces when it is the same method per pixel.
-  const bool own = comparison && deferredFor_ != PiecesKey{method, settings.cloughTocher};
+  const bool own = comparison && deferredFor_ != piecesKey(method, settings);
   DeferredPass& pass = own ? comparisonDeferred_ : deferred_;
   if (depthOnly)
     pass.drawDepth(clipFromWorld);
@@ -193,8 +202,10 @@ void MeshRenderer::drawTessellated(Method method, const RenderSettings& settings
 
 void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& requested, int width, int height) {
   RenderSettings settings = requested;
-  // A difference compares the same surfaces: the raised radiosity surface has no counterpart.
-  if (settings.view == DisplayView::Difference) settings.surfaceHeight = 0.0;
+  // A difference compares the same surfaces, and standard errors lie on them: the raised
+  // radiosity surface has no counterpart.
+  if (settings.view == DisplayView::Difference || settings.view == DisplayView::StandardError)
+    settings.surfaceHeight = 0.0;
   // A shown image needs only the surfaces' depth from pass 1: the cheapest method draws it,
   // on the flat surfaces the image was made of.
   if (hasShownImage()) {
@@ -203,9 +214,12 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
   }
   const FrameComparison comparison{
       settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Method,
-      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Image};
+      settings.view == DisplayView::Difference && settings.comparison == RenderSettings::Comparison::Image,
+      settings.view == DisplayView::StandardError};
   if (comparison.image && !hasReferenceImage())
     throw Error("difference view: no reference image to compare with (give one with --reference)");
+  if (comparison.standardErrors && !mesh_->hasStandardErrors)
+    throw Error("standard-error view: the mesh has no standard errors (a solution radview solved has them)");
   // The raised surface reaches beyond the mesh's bounds: widen the depth range to keep it.
   Camera camera = viewCamera;
   if (settings.surfaceHeight > 0.0 && methodInfo(settings.method).bezierPieces()) {
@@ -233,10 +247,11 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
       glDepthRange(0.0, 1.0);
     }
   } passStateReset;
-  drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison.method);
+  drawRadiosityPass(settings, camera, clipFromWorld, width, height, comparison);
   // Pass 2: the tone map or a false-colour view into the display target.
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.displayFramebuffer());
-  display_.draw(settings, targets_.linearTexture(), comparison.method ? targets_.comparisonTexture() : 0);
+  display_.draw(settings, targets_.linearTexture(),
+                comparison.method || comparison.standardErrors ? targets_.comparisonTexture() : 0);
   if (settings.view == DisplayView::Difference) comparedWithImage_ = comparison.image;
   drawOverlays(settings, camera, clipFromWorld, width, height, drawNet);
   timer_.end();
@@ -252,14 +267,17 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
   if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
   if (methodInfo(settings.method).bezierPieces()) uploadPatches(settings, bezierEvaluation(settings, viewCamera));
+  if (settings.view == DisplayView::StandardError && !errorsUploaded_) {
+    errorRaster_.setMesh(displayTriangles(*mesh_, *topology_, &Node::standardError), 0);
+    errorsUploaded_ = true;
+  }
   // The comparison is drawn per pixel: deferred for the C1 methods; for the quadratic one, its
   // 6-node triangles in a Bezier pass of their own unless the method's holds them.
   if (compareMethod && methodInfo(settings.comparisonMethod).bezierPieces()) {
     if (isDeferred(settings.comparisonMethod, BezierEvaluation{})) {
-      const PiecesKey key{settings.comparisonMethod, settings.cloughTocher};
+      const PiecesKey key = piecesKey(settings.comparisonMethod, settings);
       if (key != deferredFor_ && key != comparisonDeferredFor_) {
-        uploadDeferred(prepareDeferred(mesh_, topology_, settings.comparisonMethod, settings.cloughTocher),
-                       comparisonDeferred_, nullptr);
+        uploadDeferred(prepareDeferred(mesh_, topology_, key), comparisonDeferred_, nullptr);
         comparisonDeferredFor_ = key;
       }
     } else if (patchesFor_ != PiecesKey::quadraticTriangles() &&
@@ -275,7 +293,8 @@ bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& 
 }
 
 void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camera& camera,
-                                     const glm::mat4& clipFromWorld, int width, int height, bool compareMethod) {
+                                     const glm::mat4& clipFromWorld, int width, int height,
+                                     const FrameComparison& comparison) {
   // Pass 1: linear radiosity and depth; for a difference view against another method, that
   // method first, into the comparison target.
   glViewport(0, 0, width, height);
@@ -294,11 +313,21 @@ void MeshRenderer::drawRadiosityPass(const RenderSettings& settings, const Camer
   glNamedBufferData(eyePlane_, sizeof nearestW, &nearestW, GL_STREAM_DRAW);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, eyePlane_);
   glEnable(GL_CLIP_DISTANCE0);
-  if (compareMethod) {
+  if (comparison.method) {
     glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
-    RenderSettings comparison = settings;
-    comparison.tessellation = 0;
-    drawRadiosity(settings.comparisonMethod, comparison, camera, clipFromWorld, width, height, true, false);
+    RenderSettings perPixel = settings;
+    perPixel.tessellation = 0;
+    drawRadiosity(settings.comparisonMethod, perPixel, camera, clipFromWorld, width, height, true, false);
+  }
+  if (comparison.standardErrors) {  // linear between the nodes: Gouraud's triangles
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.ensureComparison());
+    const float clear[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(targets_.comparisonFramebuffer(), GL_COLOR, 0, clear);
+    glClearNamedFramebufferfi(targets_.comparisonFramebuffer(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE);
+    errorRaster_.draw(Method::Gouraud, true, clipFromWorld, errorRaster_.vertices());
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.linearFramebuffer());
   drawRadiosity(settings.method, settings, camera, clipFromWorld, width, height, false, false);

@@ -96,6 +96,7 @@ class MeshRenderer {
   // A frame's steps, in order (render reads as this list).
   struct FrameComparison {
     bool method = false, image = false;  // the difference view subtracts another method / an image
+    bool standardErrors = false;         // the standard-error view, drawn into the comparison target
   };
   // What can throw is uploaded first: the mesh when T-vertex repair changes, the method's and the
   // comparison's pieces, the control net. Returns whether the control net is drawn.
@@ -103,7 +104,7 @@ class MeshRenderer {
   // Pass 1: linear radiosity and depth, the comparison method's first into its own target; a
   // shown image then copied over the colour.
   void drawRadiosityPass(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld,
-                         int width, int height, bool compareMethod);
+                         int width, int height, const FrameComparison& comparison);
   // Pass 3: the overlays, depth-tested against the surfaces pushed back (drawOverlayDepth).
   void drawOverlays(const RenderSettings& settings, const Camera& camera, const glm::mat4& clipFromWorld, int width,
                     int height, bool drawNet);
@@ -143,6 +144,10 @@ class MeshRenderer {
   BufferStorage storage_;
   RenderTargets targets_;
   RasterPass raster_{storage_};     // flat and Gouraud, and the triangles the polygon pass draws over
+  // The standard-error view's triangles, carrying the nodes' standard errors: built when that
+  // view is first drawn for the mesh, and freed with the mesh.
+  RasterPass errorRaster_{storage_};
+  bool errorsUploaded_ = false;
   PolygonPass polygons_{storage_};  // scanline Gouraud, bilinear, serendipity quads
   OverlayPass overlays_{storage_};
   // The method's pieces, and the comparison method's when it is a Bezier method (its own

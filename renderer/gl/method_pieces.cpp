@@ -6,11 +6,29 @@
 #include "gl/patch_vertices.h"
 #include "interp/c1_patches.h"
 
+#include <optional>
+
 namespace radview::gl {
 
-std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
-                                        Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split) {
-  switch (methodInfo(method).gpu) {
+namespace {
+
+// The values a method's pieces interpolate: the thin-plate spline's fit for Method::ThinPlate
+// (its gradients then estimated from the fit), else the mesh's own.
+std::shared_ptr<const RadiosityMesh> pieceValues(std::shared_ptr<const RadiosityMesh> mesh,
+                                                 const MeshTopology& topology, const PiecesKey& key) {
+  if (key.method != Method::ThinPlate) return mesh;
+  return std::make_shared<const RadiosityMesh>(smoothThinPlate(*mesh, topology, key.thinPlate));
+}
+
+}  // namespace
+
+std::vector<BezierVertex> pieceVertices(const RadiosityMesh& drawn, const std::shared_ptr<const MeshTopology>& topology,
+                                        const PiecesKey& key, std::vector<glm::vec3>* split) {
+  std::optional<RadiosityMesh> smoothed;  // the values, as pieceValues
+  if (key.method == Method::ThinPlate) smoothed = smoothThinPlate(drawn, *topology, key.thinPlate);
+  const RadiosityMesh& mesh = smoothed ? *smoothed : drawn;
+  const CloughTocherVariant variant = key.variant;
+  switch (methodInfo(key.method).gpu) {
     case GpuPass::Triangles:
     case GpuPass::ScanlinePolygons:
     case GpuPass::BilinearPolygons:
@@ -52,12 +70,12 @@ void streamPatches(DeferredPass& pass, size_t triangles, int degree, size_t spli
 }  // namespace
 
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
-                              Method method, CloughTocherVariant variant) {
+                              const PiecesKey& key) {
   DeferredSetup setup;
   setup.mesh = std::move(mesh);
-  setup.method = method;
-  setup.variant = variant;
-  setup.surface = std::make_unique<const SurfaceTriangulation>(*setup.mesh, std::move(topology));
+  setup.values = pieceValues(setup.mesh, *topology, key);
+  setup.piecesKey = key;
+  setup.surface = std::make_unique<const SurfaceTriangulation>(*setup.values, std::move(topology));
   setup.gradients = vertexGradients(*setup.surface, true);
   return setup;
 }
@@ -65,12 +83,13 @@ DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::sh
 void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<glm::vec3>* split) {
   const SurfaceTriangulation& surface = *setup.surface;
   const size_t triangles = surface.triangles().size();
-  switch (methodInfo(setup.method).gpu) {
+  const PiecesKey& key = setup.key();
+  switch (methodInfo(key.method).gpu) {
     case GpuPass::Triangles:
     case GpuPass::ScanlinePolygons:
     case GpuPass::BilinearPolygons:
     case GpuPass::LagrangePieces:
-      throw Error("the deferred pass resolves Bezier pieces: " + methodName(setup.method) + " has none to resolve");
+      throw Error("the deferred pass resolves Bezier pieces: " + methodName(key.method) + " has none to resolve");
     case GpuPass::PowellSabinPieces:
       streamPatches(
           pass, triangles, 2, kPowellSabinSplitPoints,
@@ -79,7 +98,7 @@ void uploadDeferred(const DeferredSetup& setup, DeferredPass& pass, std::vector<
     case GpuPass::CloughTocherPieces:
       streamPatches(
           pass, triangles, 3, kCloughTocherSplitPoints,
-          [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, setup.variant, t); }, split);
+          [&](uint32_t t) { return cloughTocherPatch(surface, setup.gradients, key.variant, t); }, split);
       break;
   }
 }

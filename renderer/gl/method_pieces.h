@@ -25,10 +25,13 @@ struct PiecesKey {
   Method method = Method::Flat;
   CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
   bool quadraticTrianglesOnly = false;
+  ThinPlateSettings thinPlate;  // Method::ThinPlate's smoothing (ignored by the others)
 
-  static PiecesKey quadraticTriangles() { return {Method::Quadratic, CloughTocherVariant::AffineInvariant, true}; }
+  static PiecesKey quadraticTriangles() { return {Method::Quadratic, CloughTocherVariant::AffineInvariant, true, {}}; }
   bool operator==(const PiecesKey& other) const {
-    return method == other.method && variant == other.variant && quadraticTrianglesOnly == other.quadraticTrianglesOnly;
+    return method == other.method && variant == other.variant &&
+           quadraticTrianglesOnly == other.quadraticTrianglesOnly &&
+           (method != Method::ThinPlate || thinPlate.lambda == other.thinPlate.lambda);
   }
   bool operator!=(const PiecesKey& other) const { return !(*this == other); }
 };
@@ -38,20 +41,21 @@ struct PiecesKey {
 // elements into them (none for quadratic elements).
 // `topology` is the mesh's own, shared with the triangulation the pieces are built on.
 std::vector<BezierVertex> pieceVertices(const RadiosityMesh& mesh, const std::shared_ptr<const MeshTopology>& topology,
-                                        Method method, CloughTocherVariant variant, std::vector<glm::vec3>* split);
+                                        const PiecesKey& key, std::vector<glm::vec3>* split);
 
 // What a C1 method's pieces are built from: the mesh's triangulation and its corner gradients. It needs no OpenGL, so
-// that the viewer can make it beside its frame loop; it keeps the mesh it was made from.
+// that the viewer can make it beside its frame loop; it keeps the mesh it was made from, and the values the pieces
+// take (the thin-plate spline's for Method::ThinPlate, else the mesh itself).
 struct DeferredSetup {
   std::shared_ptr<const RadiosityMesh> mesh;
-  Method method = Method::CloughTocher;
-  CloughTocherVariant variant = CloughTocherVariant::AffineInvariant;
+  std::shared_ptr<const RadiosityMesh> values;
+  PiecesKey piecesKey;
   std::unique_ptr<const SurfaceTriangulation> surface;
   CornerGradients gradients;
-  PiecesKey key() const { return {method, variant, false}; }
+  const PiecesKey& key() const { return piecesKey; }
 };
 DeferredSetup prepareDeferred(std::shared_ptr<const RadiosityMesh> mesh, std::shared_ptr<const MeshTopology> topology,
-                              Method method, CloughTocherVariant variant);
+                              const PiecesKey& key);
 
 // A C1 method's pieces, straight into the deferred pass: each patch built on every core a block
 // of triangles at a time and never kept; its split lines into `split` when given.

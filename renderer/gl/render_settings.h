@@ -12,6 +12,7 @@ struct RenderSettings {
   Method method = Method::Gouraud;
   bool perspectiveCorrect = true;  // Gouraud: false interpolates linearly in screen space
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
+  ThinPlateSettings thinPlate;  // Method::ThinPlate's smoothing
   // Quadratic and C1 methods: 0 exact per pixel, 1..64 tessellated at that level,
   // kAdaptiveTessellation (gl/bezier_pass.h) at the level that keeps the display error under the tolerance.
   int tessellation = 0;
@@ -27,7 +28,7 @@ struct RenderSettings {
   enum class Comparison : int { Method, Image };
   Comparison comparison = Comparison::Method;
   Method comparisonMethod = Method::CloughTocher;
-  double differenceScale = 4.0 / 255.0;
+  double differenceScale = 4.0 / 255.0;  // also the top of the standard-error view's scale
   bool elementEdges = false;
   bool discontinuityEdges = false;     // coloured by continuity order (C-1, C0)
   bool tVertices = false;              // markers

@@ -37,6 +37,8 @@ std::unique_ptr<Interpolant> makeInterpolant(const RadiosityMesh& mesh, Method m
       return makeC1Quadratic(mesh, options);
     case Method::CloughTocher:
       return makeCloughTocher(mesh, options);
+    case Method::ThinPlate:
+      return makeThinPlate(mesh, options);
   }
   throw Error("unknown interpolation method");
 }

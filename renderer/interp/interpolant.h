@@ -3,6 +3,7 @@
 // for every method, built once from a mesh, evaluated at points of an element. This is the
 // CPU reference the GPU paths are checked against, so it works in double precision.
 #include "interp/method_registry.h"
+#include "interp/thin_plate.h"
 #include "mesh/radiosity_mesh.h"
 
 #include <glm/mat4x4.hpp>
@@ -52,6 +53,7 @@ struct InterpolantOptions {
   CloughTocherVariant cloughTocher = CloughTocherVariant::AffineInvariant;
   // Use the gradients stored in the mesh when it has them (else they are estimated).
   bool useStoredGradients = true;
+  ThinPlateSettings thinPlate;  // Method::ThinPlate's smoothing
 };
 
 class Interpolant {

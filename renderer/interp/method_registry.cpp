@@ -59,6 +59,10 @@ const std::vector<MethodInfo>& methodRegistry() {
        "three cubic Bezier pieces per triangle: C1, relaxed to C0 or C-1 along tagged discontinuity edges "
        "(Salesin et al. 1992)",
        false, GpuPass::CloughTocherPieces, true},
+      {Method::ThinPlate, "thin-plate", "", "Thin-plate smoothed", '8', "C&W §9.2, last paragraph",
+       "approximates the nodal values: a thin-plate smoothing spline per region between C-1 edges (kinks kept "
+       "along C0 edges), weighted by the nodes' standard errors, then Clough-Tocher's pieces",
+       false, GpuPass::CloughTocherPieces, true},
   };
   return registry;
 }

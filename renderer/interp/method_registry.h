@@ -20,6 +20,7 @@ enum class Method : int {
   Quadratic,        // Lagrange on quadratic elements (vertex and mid-edge nodes), C0
   C1Quadratic,      // Powell-Sabin split, quadratic Bezier pieces (Reichert), C1
   CloughTocher,     // three cubic Bezier pieces per triangle, C1 with relaxations (Salesin et al.)
+  ThinPlate,        // Clough-Tocher over a thin-plate smoothing spline's values: approximates, not interpolates
 };
 
 // What the GPU renderer (gl/mesh_renderer.h) draws a method with: its pass, and for the piece

@@ -13,5 +13,6 @@ std::unique_ptr<Interpolant> makeBilinear(const RadiosityMesh& mesh);
 std::unique_ptr<Interpolant> makeQuadraticLagrange(const RadiosityMesh& mesh);
 std::unique_ptr<Interpolant> makeC1Quadratic(const RadiosityMesh& mesh, const InterpolantOptions& options);
 std::unique_ptr<Interpolant> makeCloughTocher(const RadiosityMesh& mesh, const InterpolantOptions& options);
+std::unique_ptr<Interpolant> makeThinPlate(const RadiosityMesh& mesh, const InterpolantOptions& options);
 
 }  // namespace radview

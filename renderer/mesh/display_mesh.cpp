@@ -40,11 +40,12 @@ std::vector<std::array<uint32_t, 3>> elementTriangles(const RadiosityMesh& mesh,
 }
 
 std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
-                                                            const std::vector<TVertex>& tVertices) {
+                                                            const std::vector<TVertex>& tVertices,
+                                                            Rgb Node::*value) {
   std::vector<std::array<DrawnCorner, 3>> triangles;
   for (const auto& t : elementTriangles(mesh, element))
-    triangles.push_back({DrawnCorner{t[0], mesh.nodes[t[0]].B}, DrawnCorner{t[1], mesh.nodes[t[1]].B},
-                         DrawnCorner{t[2], mesh.nodes[t[2]].B}});
+    triangles.push_back({DrawnCorner{t[0], mesh.nodes[t[0]].*value}, DrawnCorner{t[1], mesh.nodes[t[1]].*value},
+                         DrawnCorner{t[2], mesh.nodes[t[2]].*value}});
   const Element& e = mesh.elements[element];
   const size_t n = e.corners.size();
   for (size_t k = 0; k < n; ++k) {
@@ -91,6 +92,23 @@ std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh&
   return triangles;
 }
 
+std::vector<DisplayVertex> displayTriangles(const RadiosityMesh& mesh, const MeshTopology& topology,
+                                            Rgb Node::*value) {
+  std::vector<DisplayVertex> triangles;
+  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
+  for (size_t e = 0; e < mesh.elements.size(); ++e) {
+    const Element& element = mesh.elements[e];
+    Rgb flat(0.0);  // the mean of the element's nodal values, as RadiosityMesh::meanB
+    for (const auto* list : {&element.corners, &element.midEdge})
+      for (uint32_t node : *list) flat += mesh.nodes[node].*value;
+    flat /= double(element.corners.size() + element.midEdge.size());
+    for (const auto& t : watertightTriangles(mesh, e, tVertices[e], value))
+      for (const DrawnCorner& c : t)
+        triangles.push_back({toFloat(mesh.nodes[c.node].position), toFloat(c.B), toFloat(flat), uint32_t(e)});
+  }
+  return triangles;
+}
+
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology) {
   DisplayMesh out;
   // Element edges by their nodes, each drawn once, in the direction its first element runs it
@@ -104,13 +122,8 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topo
     drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b});
   };
 
-  const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
-  for (size_t e = 0; e < mesh.elements.size(); ++e) {
-    const Element& element = mesh.elements[e];
-    const Rgb Bflat = mesh.meanB(e);
-    for (const auto& t : watertightTriangles(mesh, e, tVertices[e]))
-      for (const DrawnCorner& c : t)
-        out.triangles.push_back({toFloat(mesh.nodes[c.node].position), toFloat(c.B), toFloat(Bflat), uint32_t(e)});
+  out.triangles = displayTriangles(mesh, topology);
+  for (const Element& element : mesh.elements) {
     const auto& c = element.corners;
     const size_t n = c.size();
     for (size_t i = 0; i < n; ++i) {

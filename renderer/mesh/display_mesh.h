@@ -47,6 +47,11 @@ struct DisplayMesh {
 // are shown by the higher-order methods). `topology` is the mesh's own (MeshTopology(mesh)).
 DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
 
+// buildDisplayMesh's triangles carrying another nodal value in place of B (the standard-error
+// view's: &Node::standardError), interpolated the same way.
+std::vector<DisplayVertex> displayTriangles(const RadiosityMesh& mesh, const MeshTopology& topology,
+                                            Rgb Node::*value = &Node::B);
+
 // A corner of a triangle the GPU draws of an element: at a node's position, with the value the
 // element itself has there (the node's own B, or at a neighbour's T-vertex the element's linear
 // interpolation along its edge).
@@ -68,7 +73,8 @@ std::vector<std::vector<TVertex>> tVerticesByElement(const RadiosityMesh& mesh, 
 // the T-vertex and the element's straight edge: a single background pixel in a wall of the
 // solved Cornell box (C&W §9.2 on T-vertices; tests/gl/extremes_render_test.cpp).
 std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh& mesh, size_t element,
-                                                            const std::vector<TVertex>& tVertices);
+                                                            const std::vector<TVertex>& tVertices,
+                                                            Rgb Node::*value = &Node::B);
 
 // The triangles (node indices) buildDisplayMesh draws for one element. `firstCorner` starts
 // the corner-polygon triangulation at another corner: for a quad, 0 cuts along the diagonal

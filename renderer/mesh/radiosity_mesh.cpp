@@ -64,6 +64,8 @@ void validateMesh(const RadiosityMesh& mesh, const std::string& source) {
     if (mesh.hasGradients)
       for (const Vec3& g : n.gradient)
         if (!isFinite(g)) fail(source, "node ", i, " has a non-finite radiosity gradient");
+    if (mesh.hasStandardErrors && !(isFinite(n.standardError) && glm::all(glm::greaterThanEqual(n.standardError, Rgb(0.0)))))
+      fail(source, "node ", i, " has a standard error that is negative or not finite");
   }
   for (size_t e = 0; e < mesh.elements.size(); ++e) {
     const Element& el = mesh.elements[e];

@@ -26,6 +26,10 @@ struct Node {
   // Surface gradient of each channel of B (gradient[0] is grad B_r), world space. Meaningful
   // only when RadiosityMesh::hasGradients.
   std::array<Vec3, 3> gradient{};
+  // The standard error of each channel of B, as the solver estimated it from its own samples
+  // (ProgressiveRefinement: the spread of its visibility estimates). Meaningful only when
+  // RadiosityMesh::hasStandardErrors.
+  Rgb standardError{0.0};
 };
 
 enum class ElementOrder : int { Linear = 1, Quadratic = 2 };
@@ -54,6 +58,7 @@ struct RadiosityMesh {
   std::vector<Material> materials;
   std::vector<DiscontinuityEdge> discontinuities;
   bool hasGradients = false;
+  bool hasStandardErrors = false;  // solutions whose solver estimated them; other meshes lack them
 
   Bounds bounds() const;
   std::vector<Vec3> cornerPositions(size_t element) const;
@@ -64,7 +69,8 @@ struct RadiosityMesh {
 
 // Throws Error("<source>: ...") naming the first inconsistency: an index out of range, an
 // element with fewer than 3 corners or a mid-edge list of the wrong length, a repeated
-// corner, a non-finite position, radiosity or gradient, a bad continuity order.
+// corner, a non-finite position, radiosity or gradient, a standard error that is negative or not
+// finite, a bad continuity order.
 void validateMesh(const RadiosityMesh& mesh, const std::string& source);
 
 std::ostream& operator<<(std::ostream& os, const Node& n);

@@ -52,6 +52,12 @@ class SolutionReader {
     if (!ext.Has("hasGradients") || !ext.Get("hasGradients").IsBool())
       fail(std::string(kSolutionExtension) + ": hasGradients is not a boolean");
     mesh_.hasGradients = ext.Get("hasGradients").Get<bool>();
+    // Optional: files written before the solver estimated standard errors lack it.
+    if (ext.Has("hasStandardErrors")) {
+      if (!ext.Get("hasStandardErrors").IsBool())
+        fail(std::string(kSolutionExtension) + ": hasStandardErrors is not a boolean");
+      mesh_.hasStandardErrors = ext.Get("hasStandardErrors").Get<bool>();
+    }
     for (size_t m = 0; m < model_.materials.size(); ++m) mesh_.materials.push_back(material(m));
 
     // Everything is read (and so bounded by the file's bytes) before nodeCount and
@@ -146,12 +152,15 @@ class SolutionReader {
     std::array<std::vector<Vec3>, 3> gradients;
     if (mesh_.hasGradients)
       for (int c = 0; c < 3; ++c) gradients[size_t(c)] = attribute(p, kGradientAttributes[c], what, vertexCount);
+    const std::vector<Vec3> standardErrors =
+        mesh_.hasStandardErrors ? attribute(p, kStandardErrorAttribute, what, vertexCount) : std::vector<Vec3>{};
     out.vertices.resize(vertexCount);
     for (size_t v = 0; v < vertexCount; ++v) {
       out.vertices[v].position = positions[v];
       out.vertices[v].B = B[v];
       if (mesh_.hasGradients)
         for (size_t c = 0; c < 3; ++c) out.vertices[v].gradient[c] = gradients[c][v];
+      if (mesh_.hasStandardErrors) out.vertices[v].standardError = standardErrors[v];
     }
 
     auto readList = [&](const char* key, uint64_t limit) {
@@ -226,7 +235,8 @@ class SolutionReader {
         const Node& stored = mesh_.nodes[n];
         const Node& node = p.vertices[v];
         if (nodeStored[n] &&
-            (stored.position != node.position || stored.B != node.B || stored.gradient != node.gradient))
+            (stored.position != node.position || stored.B != node.B || stored.gradient != node.gradient ||
+             stored.standardError != node.standardError))
           fail(p.what + ": node " + std::to_string(n) + " differs from its copy in an earlier primitive");
         mesh_.nodes[n] = node;
         nodeStored[n] = 1;

@@ -256,6 +256,7 @@ class SolutionWriter {
 
     std::vector<glm::vec3> positions, normals, colours, radiosity;
     std::array<std::vector<glm::vec3>, 3> gradients;
+    std::vector<glm::vec3> standardErrors;
     for (uint32_t v = 0; v < nodes.size(); ++v) {
       const Node& node = mesh_.nodes[nodes[v]];
       positions.push_back(toFloat(node.position, nodes[v], "the position"));
@@ -266,6 +267,8 @@ class SolutionWriter {
       if (mesh_.hasGradients)
         for (int c = 0; c < 3; ++c)
           gradients[size_t(c)].push_back(toFloat(node.gradient[size_t(c)], nodes[v], "a gradient"));
+      if (mesh_.hasStandardErrors)
+        standardErrors.push_back(toFloat(node.standardError, nodes[v], "the standard error"));
     }
 
     tinygltf::Primitive p;
@@ -278,6 +281,7 @@ class SolutionWriter {
     p.attributes["_RADIOSITY"] = buffer_.vec3s(radiosity, false);
     if (mesh_.hasGradients)
       for (int c = 0; c < 3; ++c) p.attributes[kGradientAttributes[c]] = buffer_.vec3s(gradients[size_t(c)], false);
+    if (mesh_.hasStandardErrors) p.attributes[kStandardErrorAttribute] = buffer_.vec3s(standardErrors, false);
 
     tinygltf::Value::Object ext;
     ext["node"] = tinygltf::Value(buffer_.uints(nodes));
@@ -312,6 +316,7 @@ class SolutionWriter {
     ext["nodeCount"] = tinygltf::Value(int(mesh_.nodes.size()));
     ext["elementCount"] = tinygltf::Value(int(mesh_.elements.size()));
     ext["hasGradients"] = tinygltf::Value(mesh_.hasGradients);
+    if (mesh_.hasStandardErrors) ext["hasStandardErrors"] = tinygltf::Value(true);
     ext["toneMapScale"] = tinygltf::Value(scale);
     if (!mesh_.discontinuities.empty()) {
       std::vector<uint32_t> nodePairs;

@@ -17,6 +17,10 @@ struct Batch {
   double all = 0.0, clear = 0.0;
   Value seen{0.0};
   size_t facing = 0, visible = 0;
+  // The variance of seen / all from the batch's own samples, as if they were independent (a
+  // stratified set spreads less, so this errs high): sum_k K_k^2 (v_k - m)^2 / (sum_k K_k)^2,
+  // v_k what sample k brings (0 when blocked), m = seen / all; the delta method for a ratio.
+  Value variance{0.0};
 };
 
 template <typename Value, typename SampleValue>
@@ -55,6 +59,14 @@ Batch<Value> castBatch(const Vec3& origin, const ReceiverPoint& x, const PatchSa
       batch.seen += kernel[i] * sampleB(*facing[i]);
       ++batch.visible;
     }
+  if (batch.all > 0.0) {
+    const Value mean = batch.seen / batch.all;
+    for (size_t i = 0; i < facing.size(); ++i) {
+      const Value d = (blocked[i] ? Value(0.0) : Value(sampleB(*facing[i]))) - mean;
+      batch.variance += kernel[i] * kernel[i] * d * d;
+    }
+    batch.variance /= batch.all * batch.all;
+  }
   return batch;
 }
 
@@ -75,7 +87,10 @@ Value gather(const ReceiverPoint& x, const PatchSampler& shooter, const SampleVa
   // missed): nothing says it is hidden.
   if (!(total.all > 0.0)) return F0 * meanB;
   const bool settled = total.visible == 0 || total.visible == total.facing;
-  if (settled || sampling.maxBatches <= 1) return F0 * (total.seen / total.all);
+  if (settled || sampling.maxBatches <= 1) {
+    if (standardError) *standardError = F0 * root(total.variance);
+    return F0 * (total.seen / total.all);
+  }
   // Seen in part: batches until the visible fraction's standard error meets the target.
   std::vector<double> fractions{total.clear / total.all};
   std::vector<Value> estimates{F0 * (total.seen / total.all)};

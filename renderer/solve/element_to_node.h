@@ -51,7 +51,9 @@ struct VisibilitySampling {
 // `visibility` null: nothing occludes (V = 1). `rays` is increased by the rays cast. `scratch`
 // is reused between calls. With several batches (`sampling`), the estimate pools them all, and
 // `standardError`, when given, receives its standard error from the spread of the batches' own
-// estimates; 0 for a node settled by one batch (nothing measured says otherwise).
+// estimates. Where one batch is all it takes (a node that sees the shooter wholly or not at all,
+// or maxBatches 1), it is that batch's own spread, taken as if its samples were independent:
+// 0 for a settled node shot by one radiosity, an upper bound for a stratified set seen in part.
 double elementToNodeFormFactor(const ReceiverPoint& x, const PatchSampler& shooter, SampleStream& stream,
                                const RayCaster* visibility, size_t& rays, std::vector<AreaSample>& scratch,
                                const VisibilitySampling& sampling = {}, double* standardError = nullptr);

@@ -93,6 +93,7 @@ ProgressiveRefinement::ProgressiveRefinement(const Scene& scene, RadiosityMesh m
   for (const Element& element : mesh_.elements) unshot_.push_back(mesh_.materials[element.material].E);
   if (settings_.quadratic) refiner_.makeQuadratic(mesh_);
   H_.assign(mesh_.nodes.size(), Rgb(0.0));
+  varianceH_.assign(mesh_.nodes.size(), Rgb(0.0));
   assignReceivers();
   updateUnshotFraction();
   progress_.patches = patches_.size();
@@ -168,7 +169,9 @@ void ProgressiveRefinement::assignReceivers() {
   }
 }
 
-Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const {
+Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch,
+                                    Rgb& variance) const {
+  variance = Rgb(0.0);
   const Shot& record = history_[shot];
   const Patch& shooter = patches_[record.patch];
   // A polygon does not light itself (it is planar): no rays for that.
@@ -176,8 +179,12 @@ Rgb ProgressiveRefinement::gathered(size_t node, size_t shot, size_t& rays, std:
   // Every (shot, node) pair has its own sample stream: the result is the same whichever thread
   // computes it, and a node made by subdivision replays exactly the samples it would have had.
   SampleStream stream = SampleStream::forKey(settings_.seed, shot, node);
-  return radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]}, *record.sampler,
-                            record.deltaB, stream, rayCaster_.get(), rays, scratch, visibilitySampling());
+  Rgb standardError(0.0);
+  const Rgb H = radiosityFromPatch({mesh_.nodes[node].position, nodeNormal_[node], nodeInside_[node]},
+                                   *record.sampler, record.deltaB, stream, rayCaster_.get(), rays, scratch,
+                                   visibilitySampling(), &standardError);
+  variance = standardError * standardError;
+  return H;
 }
 
 VisibilitySampling ProgressiveRefinement::visibilitySampling() const {
@@ -223,8 +230,10 @@ bool ProgressiveRefinement::step() {
       [&](size_t node) {
         thread_local std::vector<AreaSample> scratch;
         size_t cast = 0;
-        deltaH[node] = gathered(node, shot, cast, scratch);
+        Rgb variance(0.0);
+        deltaH[node] = gathered(node, shot, cast, scratch, variance);
         H_[node] += deltaH[node];
+        varianceH_[node] += variance;
         rays[node] = uint32_t(cast);
       },
       32);
@@ -258,9 +267,13 @@ void ProgressiveRefinement::valueNewNodes(size_t firstNode) {
         thread_local std::vector<AreaSample> scratch;
         const size_t node = firstNode + i;
         size_t cast = 0;
-        Rgb H(0.0);
-        for (size_t shot = 0; shot < history_.size(); ++shot) H += gathered(node, shot, cast, scratch);
+        Rgb H(0.0), varianceH(0.0), variance(0.0);
+        for (size_t shot = 0; shot < history_.size(); ++shot) {
+          H += gathered(node, shot, cast, scratch, variance);
+          varianceH += variance;
+        }
         H_[node] = H;
+        varianceH_[node] = varianceH;
         rays[i] = cast;
       },
       4);
@@ -298,6 +311,7 @@ size_t ProgressiveRefinement::subdivide(const SubdivisionCriteria& criteria) {
   for (size_t p = 0; p < patches_.size(); ++p)
     if (changed[p]) makeSampler(patches_[p]);
   H_.resize(mesh_.nodes.size(), Rgb(0.0));
+  varianceH_.resize(mesh_.nodes.size(), Rgb(0.0));
   assignReceivers();
   valueNewNodes(firstNode);
   // Every element's unshot radiosity from its nodes as they now are: its radiosity less what it
@@ -405,11 +419,13 @@ std::vector<Rgb> ProgressiveRefinement::ambient() const {
 RadiosityMesh ProgressiveRefinement::solution(bool withAmbient) const {
   RadiosityMesh result = mesh_;
   result.hasGradients = false;
+  result.hasStandardErrors = true;
   const std::vector<Rgb> extra = withAmbient ? ambient() : std::vector<Rgb>(mesh_.nodes.size(), Rgb(0.0));
   for (size_t node = 0; node < result.nodes.size(); ++node) {
     if (nodeMaterial_[node] < 0) continue;
     const Material& material = mesh_.materials[nodeMaterial_[node]];
     result.nodes[node].B = material.E + material.rho * (H_[node] + extra[node]);
+    result.nodes[node].standardError = material.rho * glm::sqrt(varianceH_[node]);
     result.nodes[node].gradient = {};
   }
   return result;

@@ -85,7 +85,9 @@ class ProgressiveRefinement {
   const SolveProgress& progress() const { return progress_; }
   // The mesh with B = E + rho * (H + ambient) at every node; ambient is Cohen et al. 1988's
   // estimate of the light not yet shot (0 with withAmbient false, and for a converged solution
-  // about 0): display only, the solution itself never includes it.
+  // about 0): display only, the solution itself never includes it. Each node's standard error
+  // is rho times the square root of H's variance: the noise of its own visibility estimates
+  // (not that which the shooters carry from earlier bounces, nor the ambient term's bias).
   RadiosityMesh solution(bool withAmbient) const;
   // The ambient term per node: the radiosity the unshot light would still bring it.
   std::vector<Rgb> ambient() const;
@@ -122,7 +124,9 @@ class ProgressiveRefinement {
   Rgb meanH(uint32_t element, const std::vector<Rgb>& H) const;
   double unshotPower(const Patch& patch) const;  // sum over its elements of |unshot| A, R + G + B
   void makeSampler(Patch& patch) const;
-  Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch) const;
+  // The radiosity node gathers from shot, and its variance (radiosityFromPatch's standard error,
+  // squared).
+  Rgb gathered(size_t node, size_t shot, size_t& rays, std::vector<AreaSample>& scratch, Rgb& variance) const;
   VisibilitySampling visibilitySampling() const;
   void valueNewNodes(size_t firstNode);
   void updateUnshotFraction();
@@ -148,12 +152,13 @@ class ProgressiveRefinement {
   // Per node, from the first element that uses it: the point a hair inside that element its
   // rays leave from (ReceiverPoint::inside), the normal it receives with, its scene polygon, its
   // material (-1: no element uses it yet); and its gathered radiosity H, the sum of deltaB F
-  // over the shots, so that B = E + rho H.
+  // over the shots, so that B = E + rho H, and H's variance, summed over the shots (each shot's
+  // rays from a node have a sample stream of their own).
   std::vector<Vec3> nodeInside_;
   std::vector<Vec3> nodeNormal_;
   std::vector<int> nodeSurface_;
   std::vector<int> nodeMaterial_;
-  std::vector<Rgb> H_;
+  std::vector<Rgb> H_, varianceH_;
   std::vector<Shot> history_;
   double emittedPower_ = 0.0;  // sum over channels
   // [i * patches + j]: the form factor from patch i's centre to patch j with visibility, and

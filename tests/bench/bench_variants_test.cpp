@@ -18,8 +18,10 @@ TEST(BenchVariants, EveryMethodPerPixelAndThePiecesAtEveryLevelAndTolerance) {
     ++rows[v.method];
     EXPECT_TRUE(v.relaxed) << "no C0 edges: nothing to drop";
   }
+  // Thin-plate's pieces are Clough-Tocher's: only its values differ, measured per pixel.
   for (const MethodInfo& info : methodRegistry())
-    EXPECT_EQ(rows[info.method], info.bezierPieces() ? 4 : 1) << info.name << ": per pixel, 2 levels, 1 tolerance";
+    EXPECT_EQ(rows[info.method], info.bezierPieces() && info.method != Method::ThinPlate ? 4 : 1)
+        << info.name << ": per pixel, 2 levels, 1 tolerance";
   EXPECT_EQ(variants.front().setting, "per pixel");
   const BenchVariant& adaptive =
       variants[size_t(std::find_if(variants.begin(), variants.end(),

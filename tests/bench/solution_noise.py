@@ -10,7 +10,9 @@ noise). Both solutions
 are sampled with Gouraud (`radview sample`) at a grid x grid of points on the floor (the scene's
 lowest horizontal polygon, 2 % in from its bounding box), and the solution's noise is
 RMS(Y1 - Y2) / sqrt(2) over them, Y the luminance of B (the two seeds' errors are independent,
-so their difference has twice the variance of one). Configs run interleaved, round after round
+so their difference has twice the variance of one). Beside it, what the solver says of its own
+noise: the RMS over the same points of its standard errors (`sample --standard-error`, the
+luminance of SE_r SE_g SE_b), over both seeds. Configs run interleaved, round after round
 (A B C A B C ...), each round starting one config later, so that a machine's slow spell falls
 on all of them; a config's time is the median wall time of its solves, its ratio to the first
 config the median over rounds of the round's ratio. Writes the table to standard output (and
@@ -65,10 +67,12 @@ def floor_points(scene, grid):
 
 
 def sample(radview, solution, points_file):
-    _, out = run([radview, "sample", solution, "--method", "gouraud", "--points", points_file])
+    """Luminance of B and of its standard error at the points."""
+    _, out = run([radview, "sample", solution, "--method", "gouraud", "--standard-error", "--points", points_file])
     rows = [line.split() for line in out.splitlines() if line and not line.startswith("#")]
-    # Columns: element x y z distance B_r B_g B_b ...
-    return np.array([[float(r[5]), float(r[6]), float(r[7])] for r in rows]) @ LUMA
+    # Columns: element x y z distance B_r B_g B_b, nine gradient components, SE_r SE_g SE_b.
+    values = np.array([[float(x) for x in r[5:8] + r[17:20]] for r in rows])
+    return values[:, :3] @ LUMA, values[:, 3:] @ LUMA
 
 
 def main():
@@ -94,20 +98,24 @@ def main():
     seconds = {label: [] for label, _ in configs}
     ratios = {label: [] for label, _ in configs}
     noise = {label: [] for label, _ in configs}
+    estimated = {label: [] for label, _ in configs}
     mean_y = {label: [] for label, _ in configs}
     for r in range(args.rounds):
         order = configs[r % len(configs):] + configs[:r % len(configs)]
         this_round = {}
         for label, arguments in order:
-            ys, walls = [], []
+            ys, errors, walls = [], [], []
             for seed in (2 * r + 1, 2 * r + 2):
                 out = os.path.join(work, "s%d.glb" % seed)
                 wall, _ = run([args.radview, "solve", args.scene, "-o", out, "--seed", str(seed)] + arguments)
                 walls.append(wall)
-                ys.append(sample(args.radview, out, points_file))
+                y, error = sample(args.radview, out, points_file)
+                ys.append(y)
+                errors.append(error)
             seconds[label] += walls
             this_round[label] = sum(walls)
             noise[label].append(float(np.sqrt(np.mean((ys[0] - ys[1]) ** 2) / 2)))
+            estimated[label].append(float(np.sqrt(np.mean(errors[0] ** 2 + errors[1] ** 2) / 2)))
             mean_y[label].append(float(np.mean(ys[0] + ys[1]) / 2))
             print("round %d, %s: %.1f s + %.1f s, noise %.3g" % (r + 1, label, walls[0], walls[1], noise[label][-1]),
                   file=sys.stderr, flush=True)
@@ -118,15 +126,16 @@ def main():
                                                        os.cpu_count() or 1),
              "",
              "| solve | arguments | time, s (median) | time ratio (median, range) | floor noise, RMS (mean; each round) "
-             "| of the floor's mean Y |",
-             "|---|---|---|---|---|---|"]
+             "| of the floor's mean Y | the solver's estimate (mean) |",
+             "|---|---|---|---|---|---|---|"]
     for label, arguments in configs:
         n = statistics.mean(noise[label])
         m = statistics.mean(mean_y[label])
-        lines.append("| %s | `%s` | %.2f | %.2fx (%.2f-%.2f) | %.3g (%s) | %.2f %% |" % (
+        lines.append("| %s | `%s` | %.2f | %.2fx (%.2f-%.2f) | %.3g (%s) | %.2f %% | %.3g (%.2fx) |" % (
             label, " ".join(arguments) or "(defaults)", statistics.median(seconds[label]),
             statistics.median(ratios[label]), min(ratios[label]), max(ratios[label]), n,
-            ", ".join("%.3g" % x for x in noise[label]), 100 * n / m))
+            ", ".join("%.3g" % x for x in noise[label]), 100 * n / m, statistics.mean(estimated[label]),
+            statistics.mean(estimated[label]) / n))
     text = "\n".join(lines) + "\n"
     print(text)
     if args.out:

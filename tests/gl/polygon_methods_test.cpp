@@ -1,6 +1,7 @@
 // Scanline Gouraud, bilinear and quadratic on the GPU: fig. 9.8's orientation dependence on
 // pixel values, and agreement with the CPU reference per pixel.
 #include "core/camera.h"
+#include "core/error.h"
 #include "gl/egl_context.h"
 #include "gl/mesh_renderer.h"
 #include "import/load_file.h"
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -300,6 +302,44 @@ TEST(DisplayViews, ValueViewDrawsItsColourBar) {
   EXPECT_GT(top[0] + top[1] + top[2], 3 * 230);  // white at 1
   EXPECT_LT(bottom[0] + bottom[1], 2 * 40);      // dark blue at 0
   EXPECT_GT(bottom[2], bottom[0]);
+}
+
+TEST(DisplayViews, TheCKeyStepsToStandardErrorsOnlyWhereTheMeshHasThem) {
+  EXPECT_EQ(nextCycledView(DisplayView::Isolines, true), DisplayView::StandardError);
+  EXPECT_EQ(nextCycledView(DisplayView::StandardError, true), DisplayView::Normal);
+  EXPECT_EQ(nextCycledView(DisplayView::Isolines, false), DisplayView::Normal);
+  EXPECT_EQ(nextCycledView(DisplayView::Difference, false), DisplayView::Normal);
+}
+
+// The standard-error view colours how far B one standard error higher moves the displayed
+// luminance: nothing where the errors are 0 (the scale's bottom, as at its colour bar's foot), the top
+// where they move it past the scale; and it refuses a mesh without standard errors.
+TEST(DisplayViews, StandardErrorViewShowsHowFarAnErrorMovesTheDisplay) {
+  EglContext context;
+  MeshRenderer renderer;
+  RadiosityMesh mesh = loadFile(fig98).mesh;
+  RenderSettings settings;
+  settings.view = DisplayView::StandardError;
+  renderer.setMesh(mesh);
+  EXPECT_THROW(renderer.render(faceOn(0), settings, 64, 64), Error);
+  auto centre = [&](double error) {
+    mesh.hasStandardErrors = true;
+    for (Node& node : mesh.nodes) node.standardError = Rgb(error);
+    renderer.setMesh(mesh);
+    renderer.render(faceOn(0), settings, 64, 64);
+    const Image image = renderer.readDisplay();
+    const uint8_t* c = &image.rgba[(32 * 64 + 32) * 4];
+    const uint8_t* bar = &image.rgba[(63 * 64 + 62) * 4];
+    return std::array<int, 6>{c[0], c[1], c[2], bar[0], bar[1], bar[2]};
+  };
+  const std::array<int, 6> none = centre(0.0), some = centre(2e-3), past = centre(10.0);
+  // The scale's bottom, (0.02, 0.02, 0.25); the bar's lowest row is a hair above it.
+  const int bottom[3] = {5, 5, 64};
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(none[k], bottom[k], 1) << "channel " << k;
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(none[3 + k], bottom[k], 8) << "channel " << k;
+  for (int k = 0; k < 3; ++k) EXPECT_GT(past[k], 230) << "channel " << k;
+  EXPECT_GT(some[0] + some[1] + some[2], none[0] + none[1] + none[2] + 20);
+  EXPECT_LT(some[0] + some[1] + some[2], 3 * 230);
 }
 
 }  // namespace

@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
                 bundled.nodes.size(), bundled.elements.size(), bundled.discontinuities.size(), fresh.nodes.size(),
                 fresh.elements.size(), fresh.discontinuities.size());
     bool same = bundled.nodes.size() == fresh.nodes.size() && bundled.elements.size() == fresh.elements.size() &&
-                bundled.discontinuities.size() == fresh.discontinuities.size();
+                bundled.discontinuities.size() == fresh.discontinuities.size() &&
+                bundled.hasStandardErrors == fresh.hasStandardErrors;
     for (size_t e = 0; same && e < bundled.elements.size(); ++e)
       same = bundled.elements[e].corners == fresh.elements[e].corners;
     if (same) {

@@ -82,7 +82,7 @@ TEST(MethodRegistry, NamesAndAliasesResolveAndUnknownNamesListTheKnownOnes) {
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(),
                  "unknown interpolation method 'phong' (expected one of flat, gouraud, scanline-gouraud, "
-                 "bilinear, quadratic, c1-quadratic, clough-tocher)");
+                 "bilinear, quadratic, c1-quadratic, clough-tocher, thin-plate)");
   }
   const std::vector<std::string> independent = methodNames(true);
   EXPECT_EQ(independent.size(), methodRegistry().size() - 1);

@@ -31,7 +31,8 @@ namespace fs = std::filesystem;
 //   element 4  triangle (nodes 14-16) across a C-1 edge from element 0: nodes 14 and 15 sit on
 //              nodes 3 and 2 with other values
 //   node 17    used by no element
-// Material 2 is used by no element. Discontinuity edges of all three orders.
+// Material 2 is used by no element. Discontinuity edges of all three orders. Standard errors,
+// 0 at every third node.
 RadiosityMesh sampleMesh() {
   RadiosityMesh mesh;
   mesh.materials = {{"white", Rgb(0.7), Rgb(0.0)},
@@ -49,10 +50,12 @@ RadiosityMesh sampleMesh() {
     n.position = Vec3(xy[i], 0.0) + Vec3(0.1, 0.2, 0.3);
     n.B = Rgb(0.1 * double(i), 0.05 * double(i) + 0.01, 1.0 / (1.0 + double(i)));
     n.gradient = {Vec3(0.01 * double(i), 1, 0), Vec3(0, 2, -0.5), Vec3(1e-3, 0, 3)};
+    n.standardError = i % 3 == 0 ? Rgb(0.0) : Rgb(1e-3 * double(i), 2e-3, 0.5e-3 * double(i));
     mesh.nodes.push_back(n);
   }
   for (uint32_t n : {12u, 13u}) mesh.nodes[n].B = Rgb(12.5, 10.0, 7.5);
   mesh.hasGradients = true;
+  mesh.hasStandardErrors = true;
   mesh.elements = {{{0, 1, 2, 3, 4, 5}, {}, 0, 3},
                    {{6, 7, 8}, {9, 10, 11}, 0, -1},
                    {{1, 12, 13, 2}, {}, 1, 5},
@@ -77,7 +80,10 @@ void expectSameMesh(const RadiosityMesh& written, const RadiosityMesh& read) {
     SCOPED_TRACE("node " + std::to_string(i));
     EXPECT_EQ(read.nodes[i].position, toFloat(written.nodes[i].position));
     EXPECT_EQ(read.nodes[i].B, toFloat(written.nodes[i].B));
-    for (size_t c = 0; c < 3; ++c) EXPECT_EQ(read.nodes[i].gradient[c], toFloat(written.nodes[i].gradient[c]));
+    for (size_t c = 0; c < 3; ++c)
+      EXPECT_EQ(read.nodes[i].gradient[c], written.hasGradients ? toFloat(written.nodes[i].gradient[c]) : Vec3(0.0));
+    EXPECT_EQ(read.nodes[i].standardError,
+              written.hasStandardErrors ? toFloat(written.nodes[i].standardError) : Rgb(0.0));
   }
   ASSERT_EQ(read.elements.size(), written.elements.size());
   for (size_t e = 0; e < written.elements.size(); ++e) {
@@ -100,6 +106,7 @@ void expectSameMesh(const RadiosityMesh& written, const RadiosityMesh& read) {
     EXPECT_EQ(read.discontinuities[d].order, written.discontinuities[d].order);
   }
   EXPECT_EQ(read.hasGradients, written.hasGradients);
+  EXPECT_EQ(read.hasStandardErrors, written.hasStandardErrors);
 }
 
 class SolutionFileTest : public ::testing::Test {
@@ -160,13 +167,20 @@ TEST_F(SolutionFileTest, RoundTripThroughGlbAndGltf) {
   }
 }
 
-TEST_F(SolutionFileTest, RoundTripWithoutGradientsOrDiscontinuities) {
+TEST_F(SolutionFileTest, RoundTripWithoutGradientsStandardErrorsOrDiscontinuities) {
   RadiosityMesh mesh = sampleMesh();
   mesh.hasGradients = false;
+  mesh.hasStandardErrors = false;
   mesh.discontinuities.clear();
   writeSolution(mesh, path("plain.glb"));
-  const RadiosityMesh read = readSolution(GltfDocument(path("plain.glb")));
+  const GltfDocument document(path("plain.glb"));
+  for (const tinygltf::Primitive& p : document.model().meshes[0].primitives)
+    EXPECT_EQ(p.attributes.count("_RADIOSITY_STANDARD_ERROR"), 0u);
+  EXPECT_FALSE(document.model().extensions.at(kSolutionExtension).Has("hasStandardErrors"));
+  const RadiosityMesh read = readSolution(document);
   EXPECT_FALSE(read.hasGradients);
+  EXPECT_FALSE(read.hasStandardErrors);
+  expectSameMesh(mesh, read);
   EXPECT_TRUE(read.discontinuities.empty());
   EXPECT_EQ(read.elements[3].midEdge, mesh.elements[3].midEdge);
 }
@@ -414,6 +428,23 @@ TEST_F(SolutionFileTest, NodeStoredTwiceWithDifferentValues) {
     std::memcpy(accessorBytes(m, p.attributes["_RADIOSITY"]), B, sizeof B);  // vertex 0 = node 1
   });
   EXPECT_NE(readError(file).find("node 1 differs from its copy in an earlier primitive"), std::string::npos);
+}
+
+TEST_F(SolutionFileTest, StandardErrorsThatAreNegativeMissingOrNotFlaggedAreRefused) {
+  const std::string negative = damaged("negative.gltf", [](tinygltf::Model& m) {
+    tinygltf::Primitive& p = m.meshes[0].primitives[0];
+    const float error[3] = {-1e-3f, 0.0f, 0.0f};
+    std::memcpy(accessorBytes(m, p.attributes["_RADIOSITY_STANDARD_ERROR"]), error, sizeof error);
+  });
+  EXPECT_NE(readError(negative).find("standard error that is negative or not finite"), std::string::npos);
+  const std::string missing = damaged("missing.gltf", [](tinygltf::Model& m) {
+    m.meshes[0].primitives[0].attributes.erase("_RADIOSITY_STANDARD_ERROR");
+  });
+  EXPECT_NE(readError(missing).find("has no _RADIOSITY_STANDARD_ERROR attribute"), std::string::npos);
+  const std::string notBool = damaged("flag.gltf", [](tinygltf::Model& m) {
+    m.extensions[kSolutionExtension].Get<tinygltf::Value::Object>()["hasStandardErrors"] = tinygltf::Value(1);
+  });
+  EXPECT_NE(readError(notBool).find("hasStandardErrors is not a boolean"), std::string::npos);
 }
 
 }  // namespace

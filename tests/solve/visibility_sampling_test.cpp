@@ -125,5 +125,28 @@ TEST(VisibilitySampling, PooledBatchesAreUnbiasedAndTheirErrorIsTheirSpread) {
   EXPECT_LT(std::sqrt(reported) / spreadSixteen, 1.33);
 }
 
+// One batch alone (maxBatches 1) reports its own samples' spread, as if they were independent:
+// never below what one stratified batch spreads over streams, and not far above it.
+TEST(VisibilitySampling, OneBatchReportsItsOwnSpreadErringHigh) {
+  Shadowed s;
+  const RayCaster caster(s.scene);
+  const Vec3 x(0.5, 0.5, 0.0);
+  size_t rays = 0;
+  VisibilitySampling reference;
+  reference.maxBatches = reference.minBatches = 256;
+  const double truth = estimate(s, caster, x, 999999, reference, rays);
+  const int trials = 400;
+  double squares = 0.0, reported = 0.0;
+  for (int t = 0; t < trials; ++t) {
+    double error = -1.0;
+    const double a = estimate(s, caster, x, uint64_t(t), VisibilitySampling{}, rays, &error);
+    squares += (a - truth) * (a - truth) / trials;
+    reported += error * error / trials;
+  }
+  std::printf("one batch: spread %.2e, reported %.2e\n", std::sqrt(squares), std::sqrt(reported));
+  EXPECT_GT(std::sqrt(reported) / std::sqrt(squares), 0.9);
+  EXPECT_LT(std::sqrt(reported) / std::sqrt(squares), 3.0);
+}
+
 }  // namespace
 }  // namespace radview
