@@ -12,6 +12,7 @@ Each block of README.md or renderer/bench/README.md between '<!-- begin: figures
                  tracer's true image)
   truth          tests/bench/results/truth/agreement.md (tests/truth/agreement_table.py)
   solution-noise tests/bench/results/solution_noise.md (tests/bench/solution_noise.py)
+  noisy-solutions tests/bench/results/noisy_solutions.md (tests/bench/noisy_solutions.py)
 
 tests/bench/regenerate_figures.sh runs those benchmarks and then this with --write. Without
 --write it checks: exit 1 naming each block that differs from what the files give (a test runs
@@ -198,16 +199,25 @@ def truth(root):
     return lines
 
 
-def solution_noise(root):
-    path = os.path.join(root, "tests/bench/results/solution_noise.md")
+def result_table(root, name, part):
+    """A result file that is already the table, as it is."""
+    path = os.path.join(root, "tests/bench/results", name)
     if not os.path.isfile(path):
-        fail("no %s: run tests/bench/regenerate_figures.sh noise" % path)
+        fail("no %s: run tests/bench/regenerate_figures.sh %s" % (path, part))
     with open(path) as f:
         return f.read().rstrip("\n").split("\n")
 
 
+def solution_noise(root):
+    return result_table(root, "solution_noise.md", "noise")
+
+
+def noisy_solutions(root):
+    return result_table(root, "noisy_solutions.md", "noisy")
+
+
 BLOCKS = {"trade-fig9_14": trade_fig9_14, "trade-cornell": trade_cornell, "trade-cornell-truth": trade_cornell_truth,
-          "truth": truth, "solution-noise": solution_noise}
+          "truth": truth, "solution-noise": solution_noise, "noisy-solutions": noisy_solutions}
 DOCS = ["README.md", "renderer/bench/README.md"]
 
 

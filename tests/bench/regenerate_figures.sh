@@ -6,7 +6,9 @@
 #   tests/bench/regenerate_figures.sh [RADVIEW] [PART...]
 # PART: fig9_14, cornell, cornell-truth (radview bench, into assets/bench/PART/), noise (the
 # solver's noise and time at three sample settings, tests/bench/solution_noise.py, into
-# tests/bench/results/solution_noise.md), truth (Cycles
+# tests/bench/results/solution_noise.md), noisy (noisy solves drawn by the interpolants and
+# the thin-plate spline against a converged one, tests/bench/noisy_solutions.py, into
+# tests/bench/results/noisy_solutions.md and assets/readme/noisy_penumbra.png), truth (Cycles
 # against every way radview shows the Cornell box, tests/truth/agreement_table.py: needs blender;
 # its table into tests/bench/results/truth/, its pictures into assets/readme/truth/), or all (the
 # default). Minutes each on 2 cores; truth about half an hour.
@@ -25,8 +27,8 @@ wants() {
   return 1
 }
 for part in "${parts[@]}"; do
-  case $part in all | fig9_14 | cornell | cornell-truth | noise | truth) ;;
-    *) echo "regenerate_figures: unknown part '$part' (fig9_14, cornell, cornell-truth, noise, truth, all)" >&2
+  case $part in all | fig9_14 | cornell | cornell-truth | noise | noisy | truth) ;;
+    *) echo "regenerate_figures: unknown part '$part' (fig9_14, cornell, cornell-truth, noise, noisy, truth, all)" >&2
        exit 2 ;;
   esac
 done
@@ -63,6 +65,11 @@ if wants noise; then
     --config 'before: 16 samples everywhere | --discontinuity-meshing --samples 16 --max-samples 16' \
     --config 'the defaults: 32, up to 256 where seen in part | --discontinuity-meshing' \
     --config '128 samples everywhere | --discontinuity-meshing --samples 128 --max-samples 128'
+fi
+if wants noisy; then
+  mkdir -p tests/bench/results
+  /usr/bin/python3 tests/bench/noisy_solutions.py --radview "$radview" --seeds 3 \
+    --out tests/bench/results/noisy_solutions.md --picture assets/readme/noisy_penumbra.png
 fi
 if wants truth; then
   work=build/truth-figures
