@@ -4,6 +4,7 @@
 #include "core/error.h"
 #include "core/parallel_for.h"
 #include "core/strings.h"
+#include "interp/nested_dissection.h"
 #include "mesh/display_mesh.h"
 
 #include <Eigen/Sparse>
@@ -74,6 +75,7 @@ struct RegionProblem {
   Eigen::VectorXd inverseVariance;
   SparseMatrix Q;
   size_t bendingEdges = 0;
+  std::vector<Vec3> positions;  // the nodes'
 };
 
 // The normal-derivative jumps across the region's interior edges (thin_plate.h), as rows of
@@ -146,12 +148,21 @@ struct Fit {
 
 // Solves (W + lambda Q) F = W Y for one lambda, with the influence matrix's trace, tr(W^1/2
 // M^-1 W^1/2): exact (one solve per node) for a small region, else from the probes `Z`.
+//
+// The unknowns are renumbered in nested-dissection order (nested_dissection.h) and factorised in
+// that order: at 10^5 nodes a region's factorisations take less time than under Eigen's
+// minimum-degree order.
 class RegionSolver {
  public:
   explicit RegionSolver(const RegionProblem& problem) : problem_(problem) {
     const Eigen::Index n = Eigen::Index(problem.nodes.size());
-    W_ = problem.weights.asDiagonal();
-    SparseMatrix M = SparseMatrix(W_) + problem.Q;
+    const std::vector<int> order = nestedDissectionOrder(problem.Q, problem.positions);
+    Eigen::VectorXi newIndex(n);  // P: old index -> new
+    for (Eigen::Index k = 0; k < n; ++k) newIndex(order[size_t(k)]) = int(k);
+    P_ = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>(newIndex);
+    Q_ = problem.Q.twistedBy(P_);
+    W_ = Eigen::VectorXd(P_ * problem.weights).asDiagonal();
+    SparseMatrix M = SparseMatrix(W_) + Q_;
     ldlt_.analyzePattern(M);
     exactTrace_ = n <= 200;
     const Eigen::Index probes = exactTrace_ ? n : 6;
@@ -163,19 +174,19 @@ class RegionSolver {
       for (Eigen::Index j = 0; j < probes; ++j)
         for (Eigen::Index i = 0; i < n; ++i) Z_(i, j) = (random() & 1) ? 1.0 : -1.0;
     }
-    const Eigen::VectorXd root = problem.weights.cwiseSqrt();
-    Z_ = root.asDiagonal() * Z_;  // W^1/2 Z
+    const Eigen::VectorXd weights = P_ * problem.weights;
+    Z_ = weights.cwiseSqrt().asDiagonal() * Z_;  // W^1/2 Z, in the new order
     rhs_ = Eigen::MatrixXd(n, 3 + probes);
-    rhs_ << problem.weights.asDiagonal() * problem.values, Z_;
+    rhs_ << P_ * Eigen::MatrixXd(problem.weights.asDiagonal() * problem.values), Z_;
   }
 
   // Whether the factorisation succeeded; F and the trace for this lambda.
   bool solve(double lambda, Eigen::MatrixXd& F, double& trace) {
-    SparseMatrix M = SparseMatrix(W_) + lambda * problem_.Q;
+    SparseMatrix M = SparseMatrix(W_) + lambda * Q_;
     ldlt_.factorize(M);
     if (ldlt_.info() != Eigen::Success) return false;
     const Eigen::MatrixXd X = ldlt_.solve(rhs_);
-    F = X.leftCols(3);
+    F = P_.transpose() * Eigen::MatrixXd(X.leftCols(3));
     const Eigen::MatrixXd probed = X.rightCols(rhs_.cols() - 3);
     trace = 0.0;
     for (Eigen::Index j = 0; j < probed.cols(); ++j) trace += Z_.col(j).dot(probed.col(j));
@@ -185,8 +196,9 @@ class RegionSolver {
 
  private:
   const RegionProblem& problem_;
-  SparseMatrix W_;
-  Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P_;
+  SparseMatrix Q_, W_;  // in the new order
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt_;
   bool exactTrace_ = false;
   Eigen::MatrixXd Z_, rhs_;
 };
@@ -363,7 +375,7 @@ RadiosityMesh smoothThinPlate(const RadiosityMesh& mesh, const MeshTopology& top
           if (local[a] >= 0 && local[b] >= 0) localUntouchable.push_back(edgeKey(uint32_t(local[a]), uint32_t(local[b])));
         }
         std::sort(localUntouchable.begin(), localUntouchable.end());
-        std::vector<Vec3> positions;
+        std::vector<Vec3>& positions = problem.positions;
         for (uint32_t node : problem.nodes) positions.push_back(mesh.nodes[node].position);
         for (uint32_t node : problem.nodes) local[node] = -1;
         const Eigen::Index n = Eigen::Index(problem.nodes.size());
