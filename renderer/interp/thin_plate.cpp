@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <sstream>
 
@@ -347,9 +348,16 @@ RadiosityMesh smoothThinPlate(const RadiosityMesh& mesh, const MeshTopology& top
   std::vector<RegionProblem> problems(regions.size());
   std::vector<Fit> fits(regions.size());
   std::vector<ThinPlateRegion> summaries(regions.size());
+  // Largest regions first: the cores take the next region as they finish one, and a large one
+  // left for last would keep one core busy alone.
+  std::vector<size_t> largestFirst(regions.size());
+  std::iota(largestFirst.begin(), largestFirst.end(), size_t(0));
+  std::stable_sort(largestFirst.begin(), largestFirst.end(),
+                   [&](size_t a, size_t b) { return regions[a].size() > regions[b].size(); });
   parallelFor(
       regions.size(),
-      [&](size_t r) {
+      [&](size_t i) {
+        const size_t r = largestFirst[i];
         RegionProblem& problem = problems[r];
         // Local node indices, and the region's triangles over them (T-vertices made corners, so
         // that the triangulation is conforming).
