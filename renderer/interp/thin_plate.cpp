@@ -155,7 +155,7 @@ struct Fit {
 // minimum-degree order.
 class RegionSolver {
  public:
-  explicit RegionSolver(const RegionProblem& problem) : problem_(problem) {
+  explicit RegionSolver(const RegionProblem& problem) {
     const Eigen::Index n = Eigen::Index(problem.nodes.size());
     const std::vector<int> order = nestedDissectionOrder(problem.Q, problem.positions);
     Eigen::VectorXi newIndex(n);  // P: old index -> new
@@ -196,7 +196,6 @@ class RegionSolver {
   }
 
  private:
-  const RegionProblem& problem_;
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> P_;
   SparseMatrix Q_, W_;  // in the new order
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt_;
