@@ -206,12 +206,16 @@ class RegionSolver {
 // Craven & Wahba's GCV score, n RSS_w / (n - gamma tr A)^2 over the three channels, with each
 // degree of freedom charged gamma = 1.4 times (Kim & Gu 2004; mgcv's `gamma`): plain GCV (gamma
 // 1) now and then takes the data's noise for signal and nearly interpolates a small region.
+// The score has a pole where gamma tr A reaches n; below it (less smoothing) there is no score.
+constexpr double kGamma = 1.4;
+bool pastThePole(const RegionProblem& problem, double trace) {
+  return double(problem.nodes.size()) - kGamma * trace <= 0.5;
+}
 double gcvScore(const RegionProblem& problem, const Eigen::MatrixXd& F, double trace) {
-  constexpr double kGamma = 1.4;
   const double n = double(problem.nodes.size());
   const double residual = (problem.weights.asDiagonal() * (F - problem.values).cwiseAbs2()).sum() / 3.0;
   const double free = n - kGamma * trace;
-  return free > 0.5 ? n * residual / (free * free) : std::numeric_limits<double>::infinity();
+  return !pastThePole(problem, trace) ? n * residual / (free * free) : std::numeric_limits<double>::infinity();
 }
 
 // Whether a fit departs from the values by no more than their standard errors allow: the mean
@@ -226,8 +230,11 @@ bool withinStandardErrors(const RegionProblem& problem, const Eigen::MatrixXd& F
   return problem.inverseVariance.dot(residual.cwiseAbs2()) <= kDiscrepancy * double(problem.nodes.size());
 }
 
-// Fewer nodes than this and cross-validation cannot tell noise from signal: values kept.
-constexpr size_t kSmallestSmoothedRegion = 25;
+// Fewer nodes than this and cross-validation cannot tell noise from signal: values kept. With
+// standard errors the discrepancy check guards the fit, and 25 are enough; without them
+// cross-validation alone judges, and took the kinks of fig. 9.14's 38-node receiver (exact
+// values) for noise, doubling the error against the gather.
+constexpr size_t kSmallestSmoothedRegion = 25, kSmallestJudgedByValuesAlone = 100;
 
 Fit fitRegion(const RegionProblem& problem, const ThinPlateSettings& settings) {
   Fit fit;
@@ -235,7 +242,8 @@ Fit fitRegion(const RegionProblem& problem, const ThinPlateSettings& settings) {
   fit.effectiveDof = double(problem.nodes.size());
   if (problem.bendingEdges == 0 || (settings.lambda && *settings.lambda == 0.0) || !(problem.weights.sum() > 0.0))
     return fit;
-  if (!settings.lambda && problem.nodes.size() < kSmallestSmoothedRegion) return fit;
+  const size_t smallest = problem.inverseVariance.size() > 0 ? kSmallestSmoothedRegion : kSmallestJudgedByValuesAlone;
+  if (!settings.lambda && problem.nodes.size() < smallest) return fit;
   RegionSolver solver(problem);
   Eigen::MatrixXd F;
   double trace = 0.0;
@@ -251,12 +259,15 @@ Fit fitRegion(const RegionProblem& problem, const ThinPlateSettings& settings) {
   // changed the Cornell box's errors in the third digit and cost a third more time.
   const double scale = problem.weights.sum() / std::max(problem.Q.diagonal().sum(), 1e-300);
   std::map<double, double> scores;  // by t; infinite where not admissible
+  std::map<double, bool> beyondPole;
   double bestScore = std::numeric_limits<double>::infinity();
   auto score = [&](double t) {
     if (const auto known = scores.find(t); known != scores.end()) return known->second;
     const double lambda = scale * std::pow(10.0, t);
     double value = std::numeric_limits<double>::infinity();
-    if (solver.solve(lambda, F, trace) && withinStandardErrors(problem, F)) value = gcvScore(problem, F, trace);
+    const bool solved = solver.solve(lambda, F, trace);
+    beyondPole[t] = solved && pastThePole(problem, trace);
+    if (solved && withinStandardErrors(problem, F)) value = gcvScore(problem, F, trace);
     if (value < bestScore) {
       bestScore = value;
       fit = {F, lambda, trace, true};
@@ -285,6 +296,15 @@ Fit fitRegion(const RegionProblem& problem, const ThinPlateSettings& settings) {
     } else {
       break;
     }
+  }
+  // The best score next to the pole is the pole's doing, not a valley: GCV found no noise to
+  // take off (exact values, as a mesh without standard errors may hold), and any smoothing
+  // would only bend the function away from them. The values are kept.
+  const double t = bestT();
+  if (const auto below = beyondPole.find(t - 1.0); below != beyondPole.end() && below->second) {
+    fit = Fit{};
+    fit.values = problem.values;
+    fit.effectiveDof = double(problem.nodes.size());
   }
   return fit;
 }

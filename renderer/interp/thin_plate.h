@@ -21,7 +21,9 @@
 // to mean 1; without standard errors all are 1. lambda is given, or chosen per region by
 // generalised cross-validation (Craven & Wahba 1979; each degree of freedom charged 1.4 times,
 // as Kim & Gu 2004 advise against undersmoothing), the influence matrix's trace estimated from
-// random probes where the region is large (Hutchinson 1990). The sparse systems
+// random probes where the region is large (Hutchinson 1990). Where cross-validation cannot tell
+// noise from signal (a small region; the best score next to the pole of the degrees of freedom
+// charged: no noise found) the values are kept. The sparse systems
 // (W + lambda Q) f = W B are solved by Eigen's sparse LDL^T, one factorisation per lambda
 // serving R, G, B and the probes.
 #include "mesh/radiosity_mesh.h"

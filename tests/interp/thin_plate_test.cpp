@@ -85,6 +85,17 @@ TEST(ThinPlateTest, NoiseOnASmoothFunctionShrinksAsItsDegreesOfFreedomSay) {
   EXPECT_LT(factor, 1.5 * predicted);
 }
 
+// Without standard errors, cross-validation alone judges what is noise: exact values are kept,
+// in a small region (too few nodes to judge) and in a large one (no noise found: the best
+// lambda is the least one the score allows).
+TEST(ThinPlateTest, ExactValuesWithoutStandardErrorsAreKept) {
+  auto curved = [](const Vec2& p) { return Rgb(0.3 + 0.4 * p.x * p.x + 0.2 * std::sin(3.0 * p.y)); };
+  for (int n : {6, 30}) {
+    const RadiosityMesh mesh = gridMesh(n, false, 0.3, curved, 9);
+    EXPECT_EQ(largestDifference(smoothed(mesh, std::nullopt), mesh), 0.0) << (n + 1) * (n + 1) << " nodes";
+  }
+}
+
 // Two halves of a unit square, each its own nodes along x = 0.5, valued 1 and 0 with noise.
 RadiosityMesh twoHalves(bool cMinus1) {
   RadiosityMesh mesh = gridMesh(16, false, 0.0, [](const Vec2& p) { return Rgb(p.x < 0.5 + 1e-9 ? 1.0 : 0.0); }, 2);
