@@ -24,8 +24,9 @@
 // random probes where the region is large (Hutchinson 1990). Where cross-validation cannot tell
 // noise from signal (a small region; the best score next to the pole of the degrees of freedom
 // charged: no noise found) the values are kept. The sparse systems
-// (W + lambda Q) f = W B are solved by Eigen's sparse LDL^T, one factorisation per lambda
-// serving R, G, B and the probes.
+// (W + lambda Q) f = W B are solved by Eigen's supernodal sparse LU, one factorisation per
+// lambda serving R, G, B and the probes; the walk over lambda follows GCV's slope, which the
+// same factorisation gives.
 #include "mesh/radiosity_mesh.h"
 #include "mesh/topology.h"
 
