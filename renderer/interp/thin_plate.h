@@ -21,7 +21,8 @@
 // to mean 1; without standard errors all are 1. lambda is given, or chosen per region by
 // generalised cross-validation (Craven & Wahba 1979; each degree of freedom charged 1.4 times,
 // as Kim & Gu 2004 advise against undersmoothing), the influence matrix's trace estimated from
-// random probes where the region is large (Hutchinson 1990). Where cross-validation cannot tell
+// random probes where the region is large (Hutchinson 1990); a region above 12,000 nodes is
+// cross-validated in pieces of it, then fitted whole (thin_plate_region.h). Where cross-validation cannot tell
 // noise from signal (a small region; the best score next to the pole of the degrees of freedom
 // charged: no noise found) the values are kept. The sparse systems
 // (W + lambda Q) f = W B are solved by Eigen's supernodal sparse LU, one factorisation per

@@ -85,6 +85,40 @@ TEST(ThinPlateTest, NoiseOnASmoothFunctionShrinksAsItsDegreesOfFreedomSay) {
   EXPECT_LT(factor, 1.5 * predicted);
 }
 
+// A region above 12,000 nodes is cross-validated in pieces (thin_plate_region.h): its lambda
+// must still be the one that serves it best, within 10 %, among the decades around it.
+TEST(ThinPlateTest, LambdaChosenInPiecesServesTheWholeRegion) {
+  auto smooth = [](const Vec2& p) {
+    const double v = 0.5 + 0.3 * std::sin(3.0 * p.x) * std::cos(2.5 * p.y);
+    return Rgb(v, 0.8 * v, 0.6 * v);
+  };
+  const RadiosityMesh truth = gridMesh(190, false, 0.3, smooth, 5);  // 36,481 nodes
+  RadiosityMesh noisy = truth;
+  std::mt19937 random(23);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  for (Node& node : noisy.nodes) node.B += Rgb(noise(random));
+  auto error = [&](const RadiosityMesh& fit) {
+    double squares = 0.0;
+    for (size_t i = 0; i < fit.nodes.size(); ++i) squares += std::pow(fit.nodes[i].B.r - truth.nodes[i].B.r, 2);
+    return std::sqrt(squares / double(fit.nodes.size()));
+  };
+  ThinPlateReport report;
+  const double chosen = error(smoothed(noisy, std::nullopt, &report));
+  ASSERT_EQ(report.regions.size(), 1u);
+  ASSERT_TRUE(report.regions[0].smoothed);
+  const double lambda = report.regions[0].lambda;
+  double best = chosen;
+  for (double decade : {0.01, 0.1, 10.0, 100.0}) {
+    const double e = error(smoothed(noisy, lambda * decade));
+    std::printf("lambda %.3g: error %.4g\n", lambda * decade, e);
+    best = std::min(best, e);
+  }
+  std::printf("%zu nodes: chosen lambda %.3g, error %.4g; best of the decades around it %.4g\n",
+              noisy.nodes.size(), lambda, chosen, best);
+  EXPECT_LE(chosen, 1.1 * best);
+  EXPECT_LT(chosen, 0.3 * 0.05);
+}
+
 // Without standard errors, cross-validation alone judges what is noise: exact values are kept,
 // in a small region (too few nodes to judge) and in a large one (no noise found: the best
 // lambda is the least one the score allows).
