@@ -4,8 +4,10 @@
 // million of them on a million elements take seconds.
 #include "app/commands.h"
 #include "app/solve_progress_bar.h"
+#include "core/atomic_file.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/npy_array.h"
 #include "core/parallel_for.h"
 #include "core/strings.h"
 #include "interp/interpolant.h"
@@ -17,6 +19,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -28,7 +31,8 @@ namespace radview {
 namespace {
 
 struct PointRequest {
-  std::string_view entry;  // as given, for error messages
+  std::string_view entry;  // as given, for error messages (text input)
+  size_t row = 0;          // the row, from a .npy array (entry empty)
   bool byElement = false;
   uint32_t element = 0;
   Vec3 values{0.0};  // world position, or barycentric coordinates
@@ -101,11 +105,74 @@ std::vector<PointRequest> parsePoints(std::string_view text, const std::string& 
   return out;
 }
 
+// Rows of a .npy array (core/npy_array.h): x y z, or element b0 b1 b2, as the text's entries.
+std::vector<PointRequest> pointsFromNpy(const std::string& path, size_t elementCount) {
+  const NpyMatrix rows = readNpy(path);
+  if (rows.columns != 3 && rows.columns != 4)
+    throw Error(path, "has " + std::to_string(rows.columns) +
+                          " columns; expected 3 (x y z) or 4 (element b0 b1 b2)");
+  if (rows.rows == 0) throw Error(path, "no points given");
+  std::vector<PointRequest> out(rows.rows);
+  for (size_t i = 0; i < rows.rows; ++i) {
+    const auto where = [&] { return "row " + std::to_string(i); };
+    for (size_t k = 0; k < rows.columns; ++k)
+      if (!std::isfinite(rows.at(i, k))) throw Error(path, where() + " holds a number that is not finite");
+    PointRequest& request = out[i];
+    request.row = i;
+    if (rows.columns == 3) {
+      request.values = {rows.at(i, 0), rows.at(i, 1), rows.at(i, 2)};
+      continue;
+    }
+    const double element = rows.at(i, 0);
+    if (element < 0 || element != std::floor(element) || element >= double(elementCount))
+      throw Error(path, where() + ": no element " + std::to_string(element) + " (the mesh has " +
+                            std::to_string(elementCount) + " elements, numbered from 0)");
+    request.byElement = true;
+    request.element = uint32_t(element);
+    request.values = {rows.at(i, 1), rows.at(i, 2), rows.at(i, 3)};
+    // float32 coordinates sum to 1 only within float32's rounding.
+    const double tolerance = rows.itemBytes == 4 ? 1e-6 : 1e-9;
+    if (std::abs(request.values.x + request.values.y + request.values.z - 1.0) > tolerance)
+      throw Error(path, where() + ": barycentric coordinates must sum to 1");
+  }
+  return out;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
 // Shortest text that reads back as exactly `v` (std::to_chars), then a separator.
 char* appendNumber(char* out, double v, char separator) {
   out = std::to_chars(out, out + 32, v).ptr;
   *out++ = separator;
   return out;
+}
+
+// The samples as a .npy table of float64, one row per point, the text's columns, written
+// straight into the file's bytes.
+void writeSamplesNpy(const std::string& path, const std::vector<SurfacePoint>& points, const Interpolant& interpolant,
+                     const Interpolant* errorInterpolant) {
+  const size_t columns = errorInterpolant ? 20 : 17;
+  std::string bytes = npyHeader(points.size(), columns);
+  const size_t dataAt = bytes.size();
+  bytes.resize(dataAt + points.size() * columns * sizeof(double));
+  parallelFor(points.size(), [&](size_t i) {
+    const SurfacePoint& point = points[i];
+    const Sample s = interpolant.evaluate(point.element, point.x);
+    std::array<double, 20> row;
+    size_t k = 0;
+    for (double v : {double(point.element), point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b})
+      row[k++] = v;
+    for (const Vec3& g : s.gradient)
+      for (int c = 0; c < 3; ++c) row[k++] = g[c];
+    if (errorInterpolant) {
+      const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
+      for (int c = 0; c < 3; ++c) row[k++] = error[c];
+    }
+    std::memcpy(&bytes[dataAt + i * columns * sizeof(double)], row.data(), columns * sizeof(double));
+  });
+  writeFileAtomically(path, bytes);
 }
 
 }  // namespace
@@ -131,8 +198,14 @@ int runSample(const SampleOptions& options) {
     const Camera camera = cameraFromSpec(options.camera, mesh.bounds(), viewed.file.scene.cameras);
     interpolantOptions.view = ScreenView{camera.clipFromWorld(double(width) / height), Vec2(width, height)};
   }
+  if (!options.out.empty() && !endsWith(options.out, ".npy"))
+    throw Error("--out '" + options.out + "': expected a .npy file");
   std::string text, source = "--points";
-  if (options.points == "-") {
+  std::vector<PointRequest> requests;
+  if (endsWith(options.points, ".npy")) {
+    source = options.points;
+    requests = pointsFromNpy(options.points, mesh.elements.size());
+  } else if (options.points == "-") {
     text = readAll(std::cin);
     source = "standard input";
   } else if (std::ifstream in(options.points);
@@ -142,7 +215,7 @@ int runSample(const SampleOptions& options) {
   } else {
     text = options.points;
   }
-  const std::vector<PointRequest> requests = parsePoints(text, source, mesh.elements.size());
+  if (requests.empty()) requests = parsePoints(text, source, mesh.elements.size());
   const double maxDistance = options.maxDistance >= 0.0 ? options.maxDistance : 1e-3 * mesh.bounds().diagonal();
 
   // Every point is placed before anything is printed, so a bad one leaves no partial output;
@@ -158,12 +231,14 @@ int runSample(const SampleOptions& options) {
       points[i].element = request.element;
       points[i].x = pointFromBarycentric(mesh, request.element, request.values);
     } else {
-      points[i] = locator->nearest(request.values);
+      points[i] = locator->nearest(request.values, maxDistance);
     }
   });
   for (size_t i = 0; i < requests.size(); ++i)
     if (!requests[i].byElement && points[i].distance > maxDistance)
-      throw Error("point '" + std::string(requests[i].entry) + "' is off every surface: the nearest element (" +
+      throw Error("point " + (requests[i].entry.empty() ? source + " row " + std::to_string(requests[i].row)
+                                                         : "'" + std::string(requests[i].entry) + "'") +
+                  " is off every surface: the nearest element (" +
                   std::to_string(points[i].element) + ") is " + std::to_string(points[i].distance) +
                   " away, more than --max-distance " + std::to_string(maxDistance));
   const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
@@ -177,7 +252,10 @@ int runSample(const SampleOptions& options) {
     for (Node& node : errors->nodes) node.B = node.standardError;
     errorInterpolant = makeInterpolant(*errors, Method::Gouraud, interpolantOptions);
   }
-
+  if (!options.out.empty()) {
+    writeSamplesNpy(options.out, points, *interpolant, errorInterpolant.get());
+    return 0;
+  }
   std::printf(
       "# radview sample %s --method %s: element x y z distance B_r B_g B_b "
       "dBr/dx dBr/dy dBr/dz dBg/dx dBg/dy dBg/dz dBb/dx dBb/dy dBb/dz%s\n",

@@ -75,7 +75,8 @@ struct ExportOptions {
 struct SampleOptions {
   std::string file;
   std::string method = "clough-tocher";
-  std::string points;                  // a file, '-' for standard input, or the points themselves
+  std::string points;                  // a file (.npy or text), '-' for standard input, or the points themselves
+  std::string out;                     // a .npy file for the samples instead of text on standard output
   std::string diagonal = "02";         // gouraud: the quad diagonal, 02 or 13
   std::string camera;                  // scanline-gouraud: the view, as render --camera
   std::string size = "1024x768";       // scanline-gouraud: the view's image size

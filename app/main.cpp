@@ -207,8 +207,12 @@ int main(int argc, char** argv) {
       ->add_option("--points", sample.points,
                    "Points: a file, '-' (standard input), or the text itself; one per line or ';'-separated, "
                    "each 'x y z' (world space, projected onto the nearest element) or 'element b0 b1 b2' "
-                   "(barycentric in the element's first three corners)")
+                   "(barycentric in the element's first three corners); or a .npy array of such rows "
+                   "(3 or 4 columns, float64 or float32)")
       ->required();
+  sampleCommand->add_option("--out", sample.out,
+                            "A .npy file for the samples (float64, one row per point, the text's columns) "
+                            "instead of text on standard output");
   sampleCommand->add_option("--diagonal", sample.diagonal, "gouraud: cut quads along corners 02 or 13")
       ->check(CLI::IsMember({"02", "13"}))
       ->capture_default_str();

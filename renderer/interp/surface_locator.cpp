@@ -109,17 +109,25 @@ bool SurfaceLocator::visit(RTCPointQueryFunctionArguments* args) {
   return false;
 }
 
-SurfacePoint SurfaceLocator::nearest(const Vec3& p) const {
+SurfacePoint SurfaceLocator::nearest(const Vec3& p, double expectedWithin) const {
   Query query{this, p, {}, std::numeric_limits<uint32_t>::max()};
   query.best.distance = std::numeric_limits<double>::infinity();
   const Vec3 e = (p - center_) * scale_;
   RTCPointQuery point;
   point.x = float(e.x), point.y = float(e.y), point.z = float(e.z);
   point.time = 0.0f;
-  point.radius = std::numeric_limits<float>::infinity();
   RTCPointQueryContext context;
+  // First within expectedWithin: every triangle that near is visited, so one found that near
+  // is the nearest. Else (none found, or only a farther one whose box came within reach)
+  // again, within the best distance found so far.
+  point.radius = queryRadius(expectedWithin);
   rtcInitPointQueryContext(&context);
   rtcPointQuery(embree_->scene, &point, &context, &SurfaceLocator::visit, &query);
+  if (!(query.best.distance <= expectedWithin)) {
+    point.radius = queryRadius(query.best.distance);
+    rtcInitPointQueryContext(&context);
+    rtcPointQuery(embree_->scene, &point, &context, &SurfaceLocator::visit, &query);
+  }
   // A point beyond float's range has no place in Embree's frame: the brute force answers it.
   if (query.bestTriangle == std::numeric_limits<uint32_t>::max()) return nearestSurfacePoint(mesh_, p);
   return query.best;

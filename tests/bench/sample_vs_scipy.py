@@ -3,12 +3,16 @@
 
 Both evaluate the same interpolant on the same planar Delaunay mesh at the same points: the
 positions and values are float32 (what a solution file stores) and radview is given scipy's own
-estimated vertex gradients, so the two should agree to round-off. The script prints the time of
-each side, radview's peak resident set, and the largest difference in B.
+estimated vertex gradients, so the two should agree to round-off. radview runs twice per round,
+points and samples as text and as .npy arrays (--points FILE.npy --out FILE.npy), the whole
+process timed (loading included); rounds alternate scipy, text, .npy. The script prints each
+side's median time, the ratios with their range over rounds, radview's peak resident set, and
+the largest difference in B.
 
 Needs Debian's python3 with numpy and scipy (apt-get install python3-scipy python3-numpy);
 it is a benchmark, never part of the build or the tests:
     tests/bench/sample_vs_scipy.py [--radview build/radview] [--triangles 40000] [--points 1000000]
+                                   [--rounds 3]
 """
 import argparse
 import json
@@ -180,6 +184,7 @@ def main():
     ap.add_argument("--triangles", type=int, default=40000)
     ap.add_argument("--points", type=int, default=1000000)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--variant", choices=["affine", "book"], default="affine")
     ap.add_argument("--workdir", type=pathlib.Path, help="default: a temporary directory")
     ap.add_argument("--keep", action="store_true", help="keep the work directory")
@@ -193,13 +198,9 @@ def main():
 
         # scipy: triangulation plus gradient estimation is its set-up; the file gives radview
         # the same triangles and scipy's gradients, so radview's set-up is loading them.
-        t0 = time.perf_counter()
         tri = Delaunay(points)
-        interp = CloughTocher2DInterpolator(tri, values)
-        t_setup = time.perf_counter() - t0
         # Evaluate with exactly the gradients radview is given, not scipy's float64 ones.
-        grad = f32(interp.grad)
-        interp.grad = grad
+        grad = f32(CloughTocher2DInterpolator(tri, values).grad)
 
         tris = counter_clockwise(points, tri.simplices)
         solution = work / "plane.glb"
@@ -213,37 +214,53 @@ def main():
         q = rng.uniform(1e-6, 1.0 - 1e-6, size=(args.points, 2))
         pts = work / "pts.txt"
         pts.write_text("".join(f"{x!r} {y!r} 0\n" for x, y in q.tolist()))
-
-        t0 = time.perf_counter()
-        b_scipy = interp(q)
-        t_eval = time.perf_counter() - t0
-
-        out = work / "out.txt"
-        cmd = [str(args.radview), "sample", str(solution), "--method", "clough-tocher",
-               "--variant", args.variant, "--points", str(pts)]
-        t_rad, cpu_rad, rss_kib = run_radview(cmd, out)
-
-        cols = np.loadtxt(out, comments="#", usecols=(1, 2, 4, 5, 6, 7), ndmin=2)
+        pts_npy = work / "pts.npy"
+        np.save(pts_npy, np.concatenate([q, np.zeros((args.points, 1))], axis=1))
+        base = [str(args.radview), "sample", str(solution), "--method", "clough-tocher", "--variant", args.variant]
+        text_cmd = base + ["--points", str(pts)]
+        npy_out = work / "out.npy"
+        npy_cmd = base + ["--points", str(pts_npy), "--out", str(npy_out)]
+        # Rounds of scipy (set-up and evaluation), radview with text, radview with .npy, in turn.
+        times = {"scipy": [], "text": [], "npy": []}
+        rss = {"text": [], "npy": []}
+        for _ in range(args.rounds):
+            t0 = time.perf_counter()
+            tri = Delaunay(points)
+            interp = CloughTocher2DInterpolator(tri, values)
+            interp.grad = grad
+            b_scipy = interp(q)
+            times["scipy"].append(time.perf_counter() - t0)
+            for name, cmd in (("text", text_cmd), ("npy", npy_cmd)):
+                wall, _, rss_kib = run_radview(cmd, work / f"out_{name}.txt")
+                times[name].append(wall)
+                rss[name].append(rss_kib)
+        cols = np.loadtxt(work / "out_text.txt", comments="#", usecols=(1, 2, 4, 5, 6, 7), ndmin=2)
         if cols.shape[0] != args.points:
             sys.exit(f"radview printed {cols.shape[0]} points, expected {args.points}")
+        table = np.load(npy_out)
+        if not np.array_equal(table[:, [1, 2, 4, 5, 6, 7]], cols):
+            sys.exit("radview's .npy samples differ from its text")
         d_pos = np.abs(cols[:, 0:2] - q).max()
         d_b = np.abs(cols[:, 3:6] - b_scipy)
         worst = np.unravel_index(np.argmax(d_b), d_b.shape)
     finally:
         if not args.keep and args.workdir is None:
             shutil.rmtree(work, ignore_errors=True)
-
-    t_scipy = t_setup + t_eval
+    median = {k: float(np.median(v)) for k, v in times.items()}
+    ratios = {k: np.array(times["scipy"]) / np.array(times[k]) for k in ("text", "npy")}
     print(f"scipy {scipy.__version__}, numpy {np.__version__}; radview {args.radview}"
           f" (--variant {args.variant}); work directory {work}{'' if args.keep else ' (removed)'}")
-    print(f"mesh: {points.shape[0]} nodes, {tris.shape[0]} triangles; {args.points} query points")
-    rows = [("scipy set-up (Delaunay + gradients) s", f"{t_setup:.3f}"),
-            ("scipy evaluate s", f"{t_eval:.3f}"),
-            ("scipy total s", f"{t_scipy:.3f}"),
-            ("radview sample wall s (whole process)", f"{t_rad:.3f}"),
-            ("radview CPU s (user + sys)", f"{cpu_rad:.3f}"),
-            ("ratio scipy total / radview wall", f"{t_scipy / t_rad:.2f}"),
-            ("radview peak RSS MiB", f"{rss_kib / 1024:.1f}"),
+    print(f"mesh: {points.shape[0]} nodes, {tris.shape[0]} triangles; {args.points} query points; "
+          f"{args.rounds} rounds, each scipy, radview text, radview .npy in turn; medians")
+    rows = [("scipy (Delaunay, gradients, evaluation) s", f"{median['scipy']:.3f}"),
+            ("radview sample, text in and out: wall s", f"{median['text']:.3f}"),
+            ("radview sample, .npy in and out: wall s", f"{median['npy']:.3f}"),
+            ("scipy / radview, text [range over rounds]",
+             f"{np.median(ratios['text']):.2f} [{ratios['text'].min():.2f}, {ratios['text'].max():.2f}]"),
+            ("scipy / radview, .npy [range over rounds]",
+             f"{np.median(ratios['npy']):.2f} [{ratios['npy'].min():.2f}, {ratios['npy'].max():.2f}]"),
+            ("radview peak RSS MiB, text / .npy",
+             f"{np.median(rss['text']) / 1024:.1f} / {np.median(rss['npy']) / 1024:.1f}"),
             ("max |dB| radview - scipy", f"{d_b.max():.3e}"),
             ("  at point", f"{q[worst[0]].tolist()} channel {'RGB'[worst[1]]}"),
             ("mean |dB|", f"{d_b.mean():.3e}"),

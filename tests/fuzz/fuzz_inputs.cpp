@@ -2,6 +2,7 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/npy_array.h"
 #include "import/load_file.h"
 #include "import/ply_file.h"
 #include "import/ply_mesh.h"
@@ -130,6 +131,20 @@ bool importMeshBytes(const uint8_t* data, size_t size) {
       }
     }
     exerciseMesh(loadFile(path.string()).mesh);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+bool parseNpyBytes(const uint8_t* data, size_t size) {
+  try {
+    const NpyMatrix matrix = parseNpy(reinterpret_cast<const char*>(data), size, "input.npy");
+    if (matrix.values.size() != matrix.rows * matrix.columns) {
+      std::fprintf(stderr, "fuzz: %zu numbers for a %zu x %zu array\n", matrix.values.size(), matrix.rows,
+                   matrix.columns);
+      std::abort();
+    }
     return true;
   } catch (const Error&) {
     return false;

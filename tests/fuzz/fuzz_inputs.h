@@ -23,6 +23,10 @@ bool openGltfBytes(const uint8_t* data, size_t size);
 // Assimp as loadFile does; then exerciseMesh. Returns false when radview refuses the file.
 bool importMeshBytes(const uint8_t* data, size_t size);
 
+// Bytes as a .npy array (core/npy_array.h), parsed in memory; a parsed array must hold exactly
+// rows x columns numbers. Returns false when radview refuses the bytes.
+bool parseNpyBytes(const uint8_t* data, size_t size);
+
 // Decodes a mesh (tests/fuzz/mesh_bytes.h) and, if validateMesh accepts it, exerciseMesh.
 // Returns false when the mesh is refused.
 bool buildMeshBytes(const uint8_t* data, size_t size);

@@ -43,7 +43,8 @@ const fs::path kSource = RADVIEW_SOURCE_DIR;
 TEST(FuzzRegressions, EveryKeptInputHasItsRecordedOutcome) {
   const fs::path folder = kSource / "tests/fuzz/regressions";
   const std::map<std::string, bool (*)(const uint8_t*, size_t)> bodies = {
-      {"gltf", fuzz::openGltfBytes}, {"mesh", fuzz::buildMeshBytes}, {"import", fuzz::importMeshBytes}};
+      {"gltf", fuzz::openGltfBytes}, {"mesh", fuzz::buildMeshBytes}, {"import", fuzz::importMeshBytes},
+      {"npy", fuzz::parseNpyBytes}};
   std::map<std::string, bool> recorded;  // "target/file" -> opened
   std::ifstream list(folder / "outcomes.txt");
   ASSERT_TRUE(list) << "no " << (folder / "outcomes.txt");
@@ -97,6 +98,19 @@ TEST(FuzzSeeds, BundledFilesOpenThroughTheGltfTargetAndBadOnesAreRefused) {
     const std::vector<uint8_t> bytes = readBytes(kSource / bad);
     EXPECT_FALSE(fuzz::openGltfBytes(bytes.data(), bytes.size()));
   }
+}
+
+// The .npy target's seeds are numpy's own files: each must parse.
+TEST(FuzzSeeds, NumpysArraysParseThroughTheNpyTarget) {
+  int seeds = 0;
+  for (const fs::path& file : filesIn(kSource / "tests/data")) {
+    if (file.extension() != ".npy") continue;
+    SCOPED_TRACE(file.string());
+    const std::vector<uint8_t> bytes = readBytes(file);
+    EXPECT_EQ(fuzz::parseNpyBytes(bytes.data(), bytes.size()), file.filename() != "not_numpy.npy");
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 3);
 }
 
 // The mesh target's seeds are the bundled solutions in its byte encoding: they must decode to
