@@ -19,7 +19,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <optional>
@@ -149,30 +148,34 @@ char* appendNumber(char* out, double v, char separator) {
   return out;
 }
 
-// The samples as a .npy table of float64, one row per point, the text's columns, written
-// straight into the file's bytes.
+// The samples as a .npy table of float64, one row per point, the text's columns, evaluated on
+// every core a block of rows at a time, each block written as it is done.
 void writeSamplesNpy(const std::string& path, const std::vector<SurfacePoint>& points, const Interpolant& interpolant,
                      const Interpolant* errorInterpolant) {
   const size_t columns = errorInterpolant ? 20 : 17;
-  std::string bytes = npyHeader(points.size(), columns);
-  const size_t dataAt = bytes.size();
-  bytes.resize(dataAt + points.size() * columns * sizeof(double));
-  parallelFor(points.size(), [&](size_t i) {
-    const SurfacePoint& point = points[i];
-    const Sample s = interpolant.evaluate(point.element, point.x);
-    std::array<double, 20> row;
-    size_t k = 0;
-    for (double v : {double(point.element), point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b})
-      row[k++] = v;
-    for (const Vec3& g : s.gradient)
-      for (int c = 0; c < 3; ++c) row[k++] = g[c];
-    if (errorInterpolant) {
-      const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
-      for (int c = 0; c < 3; ++c) row[k++] = error[c];
-    }
-    std::memcpy(&bytes[dataAt + i * columns * sizeof(double)], row.data(), columns * sizeof(double));
-  });
-  writeFileAtomically(path, bytes);
+  AtomicFileWriter file(path);
+  const std::string header = npyHeader(points.size(), columns);
+  file.write(header.data(), header.size());
+  constexpr size_t kBlock = 65536;
+  std::vector<double> rows(std::min(kBlock, points.size()) * columns);
+  for (size_t first = 0; first < points.size(); first += kBlock) {
+    const size_t count = std::min(kBlock, points.size() - first);
+    parallelFor(count, [&](size_t i) {
+      const SurfacePoint& point = points[first + i];
+      const Sample s = interpolant.evaluate(point.element, point.x);
+      double* row = &rows[i * columns];
+      for (double v : {double(point.element), point.x.x, point.x.y, point.x.z, point.distance, s.B.r, s.B.g, s.B.b})
+        *row++ = v;
+      for (const Vec3& g : s.gradient)
+        for (int c = 0; c < 3; ++c) *row++ = g[c];
+      if (errorInterpolant) {
+        const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
+        for (int c = 0; c < 3; ++c) *row++ = error[c];
+      }
+    });
+    file.write(reinterpret_cast<const char*>(rows.data()), count * columns * sizeof(double));
+  }
+  file.commit();
 }
 
 }  // namespace

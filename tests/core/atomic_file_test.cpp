@@ -101,6 +101,38 @@ TEST_F(AtomicFileTest, AFailedWriteLeavesTheOldFileAndNoTemporary) {
   EXPECT_EQ(files(), std::vector<std::string>{"a.bin"});
 }
 
+// A file written piece by piece appears whole at commit, and only then; a writer given up
+// before it (an exception on the way) leaves the old file and no temporary; a piece that fails
+// part way says how far the file got.
+TEST_F(AtomicFileTest, AStreamedFileAppearsWholeAtCommitOrNotAtAll) {
+  std::ofstream(path("s.npy"), std::ios::binary) << "old";
+  {
+    AtomicFileWriter file(path("s.npy").string());
+    file.write("abc", 3);
+    file.write("defg", 4);
+    EXPECT_EQ(contents(path("s.npy")), "old");
+  }
+  EXPECT_EQ(contents(path("s.npy")), "old");
+  EXPECT_EQ(files(), std::vector<std::string>{"s.npy"});
+  {
+    AtomicFileWriter file(path("s.npy").string());
+    file.write("abc", 3);
+    file.write("defg", 4);
+    file.commit();
+  }
+  EXPECT_EQ(contents(path("s.npy")), "abcdefg");
+  EXPECT_EQ(files(), std::vector<std::string>{"s.npy"});
+  const std::string message = errorOf([&] {
+    FileSizeLimit limit(4096);
+    AtomicFileWriter file(path("s.npy").string());
+    file.write(std::string(3000, 'x').data(), 3000);
+    file.write(std::string(3000, 'y').data(), 3000);
+  });
+  EXPECT_NE(message.find("s.npy: writing failed after 4096 of 6000 bytes"), std::string::npos) << message;
+  EXPECT_EQ(contents(path("s.npy")), "abcdefg");
+  EXPECT_EQ(files(), std::vector<std::string>{"s.npy"});
+}
+
 TEST_F(AtomicFileTest, AFailedWriteOfANewFileLeavesNothing) {
   const std::string message = errorOf([&] {
     FileSizeLimit limit(10);
