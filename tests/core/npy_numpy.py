@@ -28,6 +28,15 @@ def text_table(output):
     return np.array([[float(v) for v in row] for row in rows])
 
 
+def saved_with_output(work, name, array):
+    """`array` saved as WORK/NAME.npy, and the path for its samples, no file there yet."""
+    path, out = os.path.join(work, name + ".npy"), os.path.join(work, name + "_samples.npy")
+    np.save(path, array)
+    if os.path.exists(out):
+        os.remove(out)
+    return path, out
+
+
 def check(condition, message, failures):
     print(("ok: " if condition else "FAILED: ") + message)
     if not condition:
@@ -49,13 +58,8 @@ def main():
     b1 = (rng.uniform(0, 1, 200) * (4096 - b0)).astype(int)
     by_element = np.stack([rng.integers(0, 1000, 200), b0 / 4096, b1 / 4096, (4096 - b0 - b1) / 4096],
                           axis=1).astype(np.float32)
-    cases = {"world_f64": (world, {}), "element_f32": (by_element, {})}
-    for name, (points, _) in cases.items():
-        path = os.path.join(work, name + ".npy")
-        np.save(path, points)
-        out = os.path.join(work, name + "_samples.npy")
-        if os.path.exists(out):
-            os.remove(out)
+    for name, points in {"world_f64": world, "element_f32": by_element}.items():
+        path, out = saved_with_output(work, name, points)
         binary = run(radview, "--method", "clough-tocher", "--standard-error", "--points", path, "--out", out)
         if binary.returncode != 0:
             print(binary.stderr, file=sys.stderr)
@@ -89,11 +93,7 @@ def main():
         "nan": (np.array([[0.1, 0.0, 0.1], [np.nan, 0.0, 0.2]]), "row 1 holds a number that is not finite"),
     }
     for name, (array, fault) in bad.items():
-        path = os.path.join(work, name + ".npy")
-        np.save(path, array)
-        out = os.path.join(work, name + "_samples.npy")
-        if os.path.exists(out):
-            os.remove(out)
+        path, out = saved_with_output(work, name, array)
         result = run(radview, "--points", path, "--out", out)
         message = result.stderr.strip()
         check(result.returncode != 0 and path in message and fault in message and not os.path.exists(out),
