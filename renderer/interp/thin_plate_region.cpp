@@ -209,20 +209,19 @@ RegionFit valuesKept(const RegionProblem& problem) {
 }
 
 // lambda by GCV over the whole region: one factorisation per decade tried. The walk starts at
-// decade `t` and leaves there the best one found.
+// decade `start` and leaves there the best one found.
 RegionFit crossValidate(const RegionProblem& problem, double& start) {
   RegionFit fit = valuesKept(problem);
   RegionSolver solver(problem);
   RegionSolver::Solution solution;
   // lambda = scale 10^t, scale where both terms weigh alike. GCV's curve in t has one valley
   // (as a rule): whole decades from `start` (t = 1 for a region: the Cornell box's regions find
-  // it in 0..2), each
-  // step taken the way the score's slope there points down, until the best decade's downhill
-  // neighbour has been tried and found worse (or the slope is flat): with one valley, the best
-  // decade is then one of the two around its floor, as walking both ways would find. Each t
-  // costs a factorisation, so every fit is kept and the best one returned; the valley is flat
-  // enough that half decades more changed the Cornell box's errors in the third digit and cost
-  // a third more time.
+  // it in 0..2), each step taken the way the score's slope there points down, until the best
+  // decade's downhill neighbour has been tried and found worse (or the slope is flat): with one
+  // valley, the best decade is then one of the two around its floor, as walking both ways
+  // would find. Each t costs a factorisation, so every fit is kept and the best one returned;
+  // the valley is flat enough that half decades more changed the Cornell box's errors in the
+  // third digit and cost a third more time.
   const double scale = problem.weights.sum() / std::max(problem.Q.diagonal().sum(), 1e-300);
   std::map<double, double> scores;  // by t; infinite where not admissible
   std::map<double, bool> beyondPole;
