@@ -178,7 +178,7 @@ CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o) {
   return command;
 }
 
-int runBench(const BenchOptions& options) {
+std::vector<TradeoffRow> measureTrade(const BenchOptions& options) {
   const auto benchStart = std::chrono::steady_clock::now();
   int width = 0, height = 0;
   parseSize(options.size, width, height);
@@ -389,6 +389,11 @@ int runBench(const BenchOptions& options) {
       "wrote %s/bench.md, bench.csv, bench.png, reference.png%s, one PNG per method, one EXR per row and its error "
       "map\n",
       options.outDir.c_str(), truth ? "" : ", reference.exr, reference-noise.png");
+  return table;
+}
+
+int runBench(const BenchOptions& options) {
+  measureTrade(options);
   return 0;
 }
 

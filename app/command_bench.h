@@ -3,11 +3,13 @@
 // file, against the per-pixel final gather (C&W §9.3.1) or the path tracer's true image as the
 // reference.
 #include "app/scene_light.h"
+#include "bench/tradeoff.h"
 #include "import/import_options.h"
 
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace radview {
 
@@ -39,6 +41,8 @@ struct BenchOptions {
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options);
+// Measures every row, writes the output folder and prints the table; returns the table's rows.
+std::vector<TradeoffRow> measureTrade(const BenchOptions& options);
 int runBench(const BenchOptions& options);
 
 }  // namespace radview

@@ -82,8 +82,8 @@ int parseTessellation(const std::string& text) {
   return int(*level);
 }
 
-void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
-                    const std::string& out, const std::string& linearOut) {
+void drawHeadless(gl::MeshRenderer& renderer, const ViewedFile& viewed, const DisplayOptions& display, int width,
+                  int height) {
   const gl::RenderSettings settings = settingsFrom(display);
   if (settings.view == gl::DisplayView::StandardError && !viewed.mesh.hasStandardErrors)
     throw Error(viewed.file.path, viewed.file.isSolution
@@ -101,12 +101,17 @@ void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int
                                          std::to_string(reference.pixels.width) + "x" +
                                          std::to_string(reference.pixels.height));
   }
-
-  gl::EglContext context;
-  gl::MeshRenderer renderer;
   renderer.setMesh(viewed.mesh);
   if (!display.reference.empty()) renderer.setReferenceImage(reference);
   renderer.render(camera, settings, width, height);
+}
+
+void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
+                    const std::string& out, const std::string& linearOut) {
+  const gl::RenderSettings settings = settingsFrom(display);
+  gl::EglContext context;
+  gl::MeshRenderer renderer;
+  drawHeadless(renderer, viewed, display, width, height);
   writePng(renderer.readDisplay(), out);
   if (!linearOut.empty()) writeLinearImage(renderer.readLinear(), linearOut);
   std::printf("%s\n", out.c_str());

@@ -93,19 +93,23 @@ void checkRayTracedOptions(const DisplayOptions& display, const GatherOptions& o
   checkGatherOptions(options);
 }
 
+std::unique_ptr<ProgressiveImage> rayTracedEstimate(const ViewedFile& viewed, const DisplayOptions& display,
+                                                    const GatherOptions& options, int width, int height) {
+  const RayTracer tracer = rayTracerFromName(display.method).value();
+  checkRayTracedOptions(display, options);
+  checkRayTracingRuns(viewed, "the " + rayTracerInfo(tracer).noun);
+  const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
+  if (tracer == RayTracer::FinalGather) return finalGather(viewed, display, options, camera, width, height);
+  return pathTracer(viewed, options, camera, width, height);
+}
+
 void renderRayTraced(const ViewedFile& viewed, const DisplayOptions& display, const GatherOptions& options, int width,
                      int height, const std::string& out, const std::string& linearOut) {
   const RayTracer tracer = rayTracerFromName(display.method).value();
   const bool gather = tracer == RayTracer::FinalGather;
   const std::string& name = rayTracerInfo(tracer).noun;
-  checkRayTracedOptions(display, options);
-  checkRayTracingRuns(viewed, "the " + name);
-
-  const Camera camera = cameraFromSpec(display.camera, viewed.mesh.bounds(), viewed.file.scene.cameras);
   const auto start = std::chrono::steady_clock::now();
-  const std::unique_ptr<ProgressiveImage> estimate = gather
-                                                         ? finalGather(viewed, display, options, camera, width, height)
-                                                         : pathTracer(viewed, options, camera, width, height);
+  const std::unique_ptr<ProgressiveImage> estimate = rayTracedEstimate(viewed, display, options, width, height);
   const bool progress = isatty(fileno(stderr));
   auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   while (estimate->samplesPerPixel() < options.spp) {

@@ -11,7 +11,7 @@
 #include "core/parallel_for.h"
 #include "core/strings.h"
 #include "interp/interpolant.h"
-#include "interp/surface_locator.h"
+#include "interp/point_sampling.h"
 #include "scene/camera_presets.h"
 #include "solve/viewed_file.h"
 
@@ -32,9 +32,7 @@ namespace {
 struct PointRequest {
   std::string_view entry;  // as given, for error messages (text input)
   size_t row = 0;          // the row, from a .npy array (entry empty)
-  bool byElement = false;
-  uint32_t element = 0;
-  Vec3 values{0.0};  // world position, or barycentric coordinates
+  PointQuery query;
 };
 
 std::string readAll(std::istream& in) {
@@ -84,14 +82,13 @@ std::vector<PointRequest> parsePoints(std::string_view text, const std::string& 
       PointRequest request;
       request.entry = entry;
       if (count == 3) {
-        request.values = {numbers[0], numbers[1], numbers[2]};
+        request.query.values = {numbers[0], numbers[1], numbers[2]};
       } else if (count == 4) {
         if (numbers[0] < 0 || numbers[0] != std::floor(numbers[0]) || numbers[0] >= double(elementCount))
           throw Error(where() + ": no element " + std::string(words[0]) + " (the mesh has " +
                       std::to_string(elementCount) + " elements, numbered from 0)");
-        request.byElement = true;
-        request.element = static_cast<uint32_t>(numbers[0]);
-        request.values = {numbers[1], numbers[2], numbers[3]};
+        request.query.element = static_cast<uint32_t>(numbers[0]);
+        request.query.values = {numbers[1], numbers[2], numbers[3]};
         if (std::abs(numbers[1] + numbers[2] + numbers[3] - 1.0) > 1e-9)
           throw Error(where() + ": barycentric coordinates must sum to 1");
       } else {
@@ -119,19 +116,19 @@ std::vector<PointRequest> pointsFromNpy(const std::string& path, size_t elementC
     PointRequest& request = out[i];
     request.row = i;
     if (rows.columns == 3) {
-      request.values = {rows.at(i, 0), rows.at(i, 1), rows.at(i, 2)};
+      request.query.values = {rows.at(i, 0), rows.at(i, 1), rows.at(i, 2)};
       continue;
     }
     const double element = rows.at(i, 0);
     if (element < 0 || element != std::floor(element) || element >= double(elementCount))
       throw Error(path, where() + ": no element " + std::to_string(element) + " (the mesh has " +
                             std::to_string(elementCount) + " elements, numbered from 0)");
-    request.byElement = true;
-    request.element = uint32_t(element);
-    request.values = {rows.at(i, 1), rows.at(i, 2), rows.at(i, 3)};
+    request.query.element = uint32_t(element);
+    request.query.values = {rows.at(i, 1), rows.at(i, 2), rows.at(i, 3)};
     // float32 coordinates sum to 1 only within float32's rounding.
     const double tolerance = rows.itemBytes == 4 ? 1e-6 : 1e-9;
-    if (std::abs(request.values.x + request.values.y + request.values.z - 1.0) > tolerance)
+    const Vec3& b = request.query.values;
+    if (std::abs(b.x + b.y + b.z - 1.0) > tolerance)
       throw Error(path, where() + ": barycentric coordinates must sum to 1");
   }
   return out;
@@ -151,8 +148,8 @@ char* appendNumber(char* out, double v, char separator) {
 // The samples as a .npy table of float64, one row per point, the text's columns, evaluated on
 // every core a block of rows at a time, each block written as it is done.
 void writeSamplesNpy(const std::string& path, const std::vector<SurfacePoint>& points, const Interpolant& interpolant,
-                     const Interpolant* errorInterpolant) {
-  const size_t columns = errorInterpolant ? 20 : 17;
+                     const StandardErrorField* errors) {
+  const size_t columns = errors ? 20 : 17;
   AtomicFileWriter file(path);
   const std::string header = npyHeader(points.size(), columns);
   file.write(header.data(), header.size());
@@ -168,8 +165,8 @@ void writeSamplesNpy(const std::string& path, const std::vector<SurfacePoint>& p
         *row++ = v;
       for (const Vec3& g : s.gradient)
         for (int c = 0; c < 3; ++c) *row++ = g[c];
-      if (errorInterpolant) {
-        const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
+      if (errors) {
+        const Rgb error = errors->at(point);
         for (int c = 0; c < 3; ++c) *row++ = error[c];
       }
     });
@@ -182,14 +179,8 @@ void writeSamplesNpy(const std::string& path, const std::vector<SurfacePoint>& p
 
 int runSample(const SampleOptions& options) {
   const Method method = methodFromName(options.method);
-  InterpolantOptions interpolantOptions;
-  if (options.diagonal != "02" && options.diagonal != "13")
-    throw Error("--diagonal '" + options.diagonal + "': expected 02 or 13");
-  interpolantOptions.diagonal = options.diagonal == "13" ? QuadDiagonal::D13 : QuadDiagonal::D02;
-  interpolantOptions.cloughTocher = cloughTocherVariantFromName(options.variant);
-  interpolantOptions.thinPlate = thinPlateSettingsFromText(options.smoothing);
-  interpolantOptions.useStoredGradients = !options.estimateGradients;
-
+  InterpolantOptions interpolantOptions = interpolantOptionsFromNames(options.diagonal, options.variant,
+                                                                      options.smoothing, options.estimateGradients);
   const ViewedFile viewed = openForViewing(options.file, options.elementSize, options.import, options.light, nullptr,
                                            solveProgressOnTerminal(options.light));
   if (!viewed.lighting.empty())
@@ -223,40 +214,23 @@ int runSample(const SampleOptions& options) {
 
   // Every point is placed before anything is printed, so a bad one leaves no partial output;
   // the first bad one in the input is the one reported.
-  bool anyWorldPoint = false;
-  for (const PointRequest& request : requests) anyWorldPoint |= !request.byElement;
-  std::optional<SurfaceLocator> locator;
-  if (anyWorldPoint) locator.emplace(mesh);
-  std::vector<SurfacePoint> points(requests.size());
-  parallelFor(requests.size(), [&](size_t i) {
-    const PointRequest& request = requests[i];
-    if (request.byElement) {
-      points[i].element = request.element;
-      points[i].x = pointFromBarycentric(mesh, request.element, request.values);
-    } else {
-      points[i] = locator->nearest(request.values, maxDistance);
-    }
-  });
-  for (size_t i = 0; i < requests.size(); ++i)
-    if (!requests[i].byElement && points[i].distance > maxDistance)
-      throw Error("point " + (requests[i].entry.empty() ? source + " row " + std::to_string(requests[i].row)
-                                                         : "'" + std::string(requests[i].entry) + "'") +
-                  " is off every surface: the nearest element (" +
-                  std::to_string(points[i].element) + ") is " + std::to_string(points[i].distance) +
-                  " away, more than --max-distance " + std::to_string(maxDistance));
+  const std::vector<SurfacePoint> points =
+      placePoints(mesh, requests.size(), [&](size_t i) { return requests[i].query; }, maxDistance);
+  if (const size_t i = firstOffSurface(points, maxDistance); i < points.size())
+    throw Error("point " + (requests[i].entry.empty() ? source + " row " + std::to_string(requests[i].row)
+                                                       : "'" + std::string(requests[i].entry) + "'") +
+                " is off every surface: the nearest element (" + std::to_string(points[i].element) + ") is " +
+                std::to_string(points[i].distance) + " away, more than --max-distance " + std::to_string(maxDistance));
   const std::unique_ptr<Interpolant> interpolant = makeInterpolant(mesh, method, interpolantOptions);
-  // The standard errors between the nodes: linear (Gouraud), as the standard-error view draws them.
-  std::optional<RadiosityMesh> errors;
-  std::unique_ptr<Interpolant> errorInterpolant;
+  std::optional<StandardErrorField> errors;
   if (options.standardError) {
     if (!mesh.hasStandardErrors)
       throw Error(options.file, "has no standard errors for --standard-error (its solver did not estimate them)");
-    errors = mesh;
-    for (Node& node : errors->nodes) node.B = node.standardError;
-    errorInterpolant = makeInterpolant(*errors, Method::Gouraud, interpolantOptions);
+    errors.emplace(mesh, interpolantOptions);
   }
+  const StandardErrorField* errorField = errors ? &*errors : nullptr;
   if (!options.out.empty()) {
-    writeSamplesNpy(options.out, points, *interpolant, errorInterpolant.get());
+    writeSamplesNpy(options.out, points, *interpolant, errorField);
     return 0;
   }
   std::printf(
@@ -279,8 +253,8 @@ int runSample(const SampleOptions& options) {
         out = appendNumber(out, v, ' ');
       for (const Vec3& g : s.gradient)
         for (int k = 0; k < 3; ++k) out = appendNumber(out, g[k], ' ');
-      if (errorInterpolant) {
-        const Rgb error = errorInterpolant->evaluate(point.element, point.x).B;
+      if (errorField) {
+        const Rgb error = errorField->at(point);
         for (int k = 0; k < 3; ++k) out = appendNumber(out, error[k], ' ');
       }
       out[-1] = '\n';

@@ -2,11 +2,13 @@
 // The subcommands, each a plain options struct filled by CLI11 in main.cpp and a run
 // function that returns the exit status. Errors are thrown as radview::Error.
 #include "core/limits.h"
+#include "gather/progressive_image.h"
 #include "gl/mesh_renderer.h"
 #include "app/scene_light.h"
 #include "import/import_options.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 namespace radview {
@@ -133,10 +135,21 @@ int parseTessellation(const std::string& text);
 void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out, const std::string& linearOut = "");
 
+// Draws the viewed file as `display` asks, through the GL renderer of the current context (an
+// EglContext headless), at width x height; the renderer then holds the frame to read back.
+// Throws Error for a display option or a reference image that does not fit.
+void drawHeadless(gl::MeshRenderer& renderer, const ViewedFile& viewed, const DisplayOptions& display, int width,
+                  int height);
+
 // Throws Error for a gather option out of its range (--spp, --emitter-samples).
 void checkGatherOptions(const GatherOptions& gather);
 // Throws Error for a display option the GL renderer alone draws, or a gather option out of range.
 void checkRayTracedOptions(const DisplayOptions& display, const GatherOptions& gather);
+// The final gather's or the path tracer's estimate (display.method) of the viewed file's image from
+// the display options' camera, before its first pass. Throws Error as checkRayTracedOptions, or
+// where the file cannot be ray traced.
+std::unique_ptr<ProgressiveImage> rayTracedEstimate(const ViewedFile& viewed, const DisplayOptions& display,
+                                                    const GatherOptions& gather, int width, int height);
 // The final gather's or the path tracer's image (display.method) of the viewed file to a PNG at
 // `out` (and its linear radiosity at `linearOut`), with the display options' camera and
 // exposure; prints the path and a summary. Throws Error for a GL-only display option or a bad

@@ -12,6 +12,14 @@ find_package(embree 3 CONFIG REQUIRED)
 find_package(assimp 5 CONFIG REQUIRED)
 find_package(OpenImageIO CONFIG REQUIRED)
 find_package(Eigen3 3.3 CONFIG REQUIRED)
+# The Python module (app/python), built for Debian's interpreter, whose numpy and scipy the
+# packages install (another: -DPython_EXECUTABLE=...); pybind11 through CMake's FindPython.
+if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python_EXECUTABLE /usr/bin/python3)
+endif()
+set(PYBIND11_FINDPYTHON ON)
+find_package(Python COMPONENTS Interpreter Development.Module REQUIRED)
+find_package(pybind11 2.10 CONFIG REQUIRED)
 pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET epoxy)
 pkg_check_modules(imgui REQUIRED IMPORTED_TARGET imgui)
 

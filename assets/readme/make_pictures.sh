@@ -48,5 +48,9 @@ budget="--max-elements 1000 --tolerance 1 --min-element-size 0.00125"
 "$radview" render "$solved/corner.glb" --method gouraud --edges $corner --out $out/view_driven_corner.png
 "$radview" render "$solved/corner.glb" --method gouraud --edges --size 288x288 --out $out/view_driven_whole.png
 
+# The Python page's worked example (app/python/README.md): a row of pixels, radview against scipy.
+PYTHONPATH="$(dirname "$radview")/python" /usr/bin/python3 app/python/examples/worked_example.py --out "$solved"
+cp "$solved/worked_example.png" $out/python_worked_example.png
+
 # The truth table's pictures (truth | row | difference) come with its figures:
 # tests/bench/regenerate_figures.sh truth.

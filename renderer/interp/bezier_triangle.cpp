@@ -67,16 +67,21 @@ Vec3 BarycentricFrame::operator()(const Vec3& x) const {
   return lambda / (lambda.x + lambda.y + lambda.z);
 }
 
+namespace {
+
 // C&W eq. 9.7 by de Casteljau: n - 1 rounds of b^(m-1)_ijk = bu b^m_(i+1)jk + bv b^m_i(j+1)k +
 // bw b^m_ij(k+1) leave the degree-1 net a_100, a_010, a_001; then B = beta . a and
 // dB/dbeta_i = n a_i (the derivative of a Bernstein polynomial is n times the difference net,
 // and the remaining rounds commute with taking it).
-BezierJet evaluateBezier(int n, const Rgb* b, const Vec3& beta) {
-  RADVIEW_CHECK(n >= 1 && n <= 3);
-  std::array<Rgb, 10> net{};
-  std::copy(b, b + (n + 1) * (n + 2) / 2, net.begin());
-  for (int m = n; m > 1; --m) {
-    std::array<Rgb, 10> next{};
+// Unrolled for each degree, between two nets that are never cleared (each round writes every
+// value the next one reads).
+template <int n>
+BezierJet deCasteljau(const Rgb* b, const Vec3& beta) {
+  std::array<Rgb, 10> nets[2];
+  const Rgb* net = b;
+  int into = 0;
+  for (int m = n; m > 1; --m, into ^= 1) {
+    Rgb* next = nets[into].data();
     for (int i = m - 1; i >= 0; --i)
       for (int j = m - 1 - i; j >= 0; --j)
         next[bezierIndex(m - 1, i, j)] = beta.x * net[bezierIndex(m, i + 1, j)] +
@@ -87,6 +92,13 @@ BezierJet evaluateBezier(int n, const Rgb* b, const Vec3& beta) {
   jet.B = beta.x * net[0] + beta.y * net[1] + beta.z * net[2];
   for (int i = 0; i < 3; ++i) jet.dBeta[i] = double(n) * net[i];
   return jet;
+}
+
+}  // namespace
+
+BezierJet evaluateBezier(int n, const Rgb* b, const Vec3& beta) {
+  RADVIEW_CHECK(n >= 1 && n <= 3);
+  return n == 3 ? deCasteljau<3>(b, beta) : n == 2 ? deCasteljau<2>(b, beta) : deCasteljau<1>(b, beta);
 }
 
 Sample toWorld(const BezierJet& jet, const std::array<Vec3, 3>& gradBeta) {

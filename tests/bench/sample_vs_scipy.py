@@ -5,14 +5,15 @@ Both evaluate the same interpolant on the same planar Delaunay mesh at the same 
 positions and values are float32 (what a solution file stores) and radview is given scipy's own
 estimated vertex gradients, so the two should agree to round-off. radview runs twice per round,
 points and samples as text and as .npy arrays (--points FILE.npy --out FILE.npy), the whole
-process timed (loading included); rounds alternate scipy, text, .npy. The script prints each
-side's median time, the ratios with their range over rounds, radview's peak resident set, and
-the largest difference in B.
+process timed (loading included), and once through the Python module (radview.load, then
+Solution.sample on the numpy array, both timed); rounds alternate scipy, text, .npy, module. The
+script prints each side's median time, the ratios with their range over rounds, radview's peak
+resident set, and the largest difference in B.
 
 Needs Debian's python3 with numpy and scipy (apt-get install python3-scipy python3-numpy);
 it is a benchmark, never part of the build or the tests:
-    tests/bench/sample_vs_scipy.py [--radview build/radview] [--triangles 40000] [--points 1000000]
-                                   [--rounds 3]
+    tests/bench/sample_vs_scipy.py [--radview build/radview] [--module build/python]
+                                   [--triangles 40000] [--points 1000000] [--rounds 3]
 """
 import argparse
 import json
@@ -181,6 +182,8 @@ def run_radview(cmd, stdout):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--radview", type=pathlib.Path, default=REPO / "build" / "radview")
+    ap.add_argument("--module", type=pathlib.Path, default=REPO / "build" / "python",
+                    help="the folder holding the radview Python module")
     ap.add_argument("--triangles", type=int, default=40000)
     ap.add_argument("--points", type=int, default=1000000)
     ap.add_argument("--seed", type=int, default=1)
@@ -189,6 +192,8 @@ def main():
     ap.add_argument("--workdir", type=pathlib.Path, help="default: a temporary directory")
     ap.add_argument("--keep", action="store_true", help="keep the work directory")
     args = ap.parse_args()
+    sys.path.insert(0, str(args.module))
+    import radview
     rng = np.random.default_rng(args.seed)
     work = args.workdir or pathlib.Path(tempfile.mkdtemp(prefix="sample_vs_scipy."))
     work.mkdir(parents=True, exist_ok=True)
@@ -220,8 +225,9 @@ def main():
         text_cmd = base + ["--points", str(pts)]
         npy_out = work / "out.npy"
         npy_cmd = base + ["--points", str(pts_npy), "--out", str(npy_out)]
-        # Rounds of scipy (set-up and evaluation), radview with text, radview with .npy, in turn.
-        times = {"scipy": [], "text": [], "npy": []}
+        q3 = np.concatenate([q, np.zeros((args.points, 1))], axis=1)
+        # Rounds of scipy (set-up and evaluation), radview with text, with .npy, and the module, in turn.
+        times = {"scipy": [], "text": [], "npy": [], "module": []}
         rss = {"text": [], "npy": []}
         for _ in range(args.rounds):
             t0 = time.perf_counter()
@@ -234,12 +240,17 @@ def main():
                 wall, _, rss_kib = run_radview(cmd, work / f"out_{name}.txt")
                 times[name].append(wall)
                 rss[name].append(rss_kib)
+            t0 = time.perf_counter()
+            b_module = radview.load(solution).sample(q3, method="clough-tocher", variant=args.variant)["B"]
+            times["module"].append(time.perf_counter() - t0)
         cols = np.loadtxt(work / "out_text.txt", comments="#", usecols=(1, 2, 4, 5, 6, 7), ndmin=2)
         if cols.shape[0] != args.points:
             sys.exit(f"radview printed {cols.shape[0]} points, expected {args.points}")
         table = np.load(npy_out)
         if not np.array_equal(table[:, [1, 2, 4, 5, 6, 7]], cols):
             sys.exit("radview's .npy samples differ from its text")
+        if not np.array_equal(b_module, cols[:, 3:6]):
+            sys.exit("the module's samples differ from radview sample's")
         d_pos = np.abs(cols[:, 0:2] - q).max()
         d_b = np.abs(cols[:, 3:6] - b_scipy)
         worst = np.unravel_index(np.argmax(d_b), d_b.shape)
@@ -247,18 +258,21 @@ def main():
         if not args.keep and args.workdir is None:
             shutil.rmtree(work, ignore_errors=True)
     median = {k: float(np.median(v)) for k, v in times.items()}
-    ratios = {k: np.array(times["scipy"]) / np.array(times[k]) for k in ("text", "npy")}
+    ratios = {k: np.array(times["scipy"]) / np.array(times[k]) for k in ("text", "npy", "module")}
     print(f"scipy {scipy.__version__}, numpy {np.__version__}; radview {args.radview}"
           f" (--variant {args.variant}); work directory {work}{'' if args.keep else ' (removed)'}")
     print(f"mesh: {points.shape[0]} nodes, {tris.shape[0]} triangles; {args.points} query points; "
-          f"{args.rounds} rounds, each scipy, radview text, radview .npy in turn; medians")
+          f"{args.rounds} rounds, each scipy, radview text, radview .npy, the module in turn; medians")
     rows = [("scipy (Delaunay, gradients, evaluation) s", f"{median['scipy']:.3f}"),
             ("radview sample, text in and out: wall s", f"{median['text']:.3f}"),
             ("radview sample, .npy in and out: wall s", f"{median['npy']:.3f}"),
+            ("radview.load + Solution.sample (module) s", f"{median['module']:.3f}"),
             ("scipy / radview, text [range over rounds]",
              f"{np.median(ratios['text']):.2f} [{ratios['text'].min():.2f}, {ratios['text'].max():.2f}]"),
             ("scipy / radview, .npy [range over rounds]",
              f"{np.median(ratios['npy']):.2f} [{ratios['npy'].min():.2f}, {ratios['npy'].max():.2f}]"),
+            ("scipy / module [range over rounds]",
+             f"{np.median(ratios['module']):.2f} [{ratios['module'].min():.2f}, {ratios['module'].max():.2f}]"),
             ("radview peak RSS MiB, text / .npy",
              f"{np.median(rss['text']) / 1024:.1f} / {np.median(rss['npy']) / 1024:.1f}"),
             ("max |dB| radview - scipy", f"{d_b.max():.3e}"),
