@@ -117,7 +117,8 @@ noise taken out), linear_error, mach_error, c0_kink_error (each with _low, _high
 max_error, display_rmse, display_max, mach_bands, c0_kinks, reference_noise_steps, split,
 solution_part and reconstruction_part (with _low, _high; where split), pareto, image.
 Options are the command's, as keywords: size=(128, 128), spp=168, reference="path-trace", ...)");
-  m.def("methods", &pictureMethodNames, "The method names render and sample take, the ray tracers' included.");
+  m.def("methods", &pictureMethodNames,
+        "methods() -> list\n\nThe method names render and sample take, the ray tracers' included.");
 }
 
 }  // namespace radview::python

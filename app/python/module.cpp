@@ -19,6 +19,10 @@ Image Synthesis, section 9.2-9.3), from Python.
 
 Errors radview refuses raise radview.Error, with the command line's message.)";
   py::register_exception<radview::Error>(m, "Error", PyExc_RuntimeError);
+  // Each docstring opens with its signature as a user writes the call (keywords and defaults);
+  // pybind11's generated one would name C++ types.
+  py::options options;
+  options.disable_function_signatures();
   py::class_<radview::python::Solution> solution = radview::python::bindSolution(m);
   radview::python::bindSampling(solution);
   radview::python::bindRendering(solution);
