@@ -121,8 +121,10 @@ Solution load(const py::handle& path, const py::kwargs& options) {
   command.add_option("--element-size", elementSize)->check(CLI::Range(1e-12, 1e12));
   parseKeywordOptions(command, options, "radview.load");
   py::gil_scoped_release release;
-  return Solution{std::make_shared<const ViewedFile>(
-      openForViewing(file, elementSize, import, light, nullptr, solveProgressOnTerminal(light)))};
+  Solution solution;
+  solution.viewed = std::make_shared<const ViewedFile>(
+      openForViewing(file, elementSize, import, light, nullptr, solveProgressOnTerminal(light)));
+  return solution;
 }
 
 py::class_<Solution> bindSolution(py::module_& m) {

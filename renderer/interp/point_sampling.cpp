@@ -21,11 +21,12 @@ InterpolantOptions interpolantOptionsFromNames(const std::string& diagonal, cons
 }
 
 void forEachPlacedPoint(const RadiosityMesh& mesh, size_t count, const std::function<PointQuery(size_t)>& query,
-                        double maxDistance, const std::function<void(size_t, const SurfacePoint&)>& use) {
+                        double maxDistance, const std::function<void(size_t, const SurfacePoint&)>& use,
+                        const SurfaceLocator* locator) {
   bool anyWorldPoint = false;
   for (size_t i = 0; i < count && !anyWorldPoint; ++i) anyWorldPoint = query(i).element == PointQuery::kWorldPoint;
-  std::optional<SurfaceLocator> locator;
-  if (anyWorldPoint) locator.emplace(mesh);
+  std::optional<SurfaceLocator> built;
+  if (anyWorldPoint && !locator) locator = &built.emplace(mesh);
   parallelFor(count, [&](size_t i) {
     const PointQuery q = query(i);
     SurfacePoint point;

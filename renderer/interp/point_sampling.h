@@ -3,6 +3,7 @@
 // element, or barycentric coordinates on a given one, then evaluated. What `radview sample` and
 // the Python module's sample() share; each reads and reports the points its own way.
 #include "interp/interpolant.h"
+#include "interp/surface_locator.h"
 #include "interp/surface_point.h"
 #include "mesh/radiosity_mesh.h"
 
@@ -36,9 +37,11 @@ InterpolantOptions interpolantOptionsFromNames(const std::string& diagonal, cons
 std::vector<SurfacePoint> placePoints(const RadiosityMesh& mesh, size_t count,
                                       const std::function<PointQuery(size_t)>& query, double maxDistance);
 // The same, handing each point to use(i, point) on the core that placed it, while it is in
-// cache, instead of keeping them all.
+// cache, instead of keeping them all. `locator`, where the caller keeps one of `mesh` between
+// calls, places the world points instead of one built here.
 void forEachPlacedPoint(const RadiosityMesh& mesh, size_t count, const std::function<PointQuery(size_t)>& query,
-                        double maxDistance, const std::function<void(size_t, const SurfacePoint&)>& use);
+                        double maxDistance, const std::function<void(size_t, const SurfacePoint&)>& use,
+                        const SurfaceLocator* locator = nullptr);
 // The indices 0..count-1 ordered by element[i] (a counting sort: stable, O(count + elements)).
 // Evaluating in this order reads each element's patch from memory once for all its points
 // instead of once per point: a Clough-Tocher patch is 900 bytes, and a million random points

@@ -128,6 +128,15 @@ class Sampling(unittest.TestCase):
         theirs = self.cli_samples("bary", np.column_stack([self.elements, self.barycentric]))
         np.testing.assert_array_equal(ours["B"], theirs[:, 5:8])
 
+    def test_kept_set_up_gives_the_same_samples(self):
+        fresh = radview.load(SOLVED)
+        first = fresh.sample(self.world, method="clough-tocher")["B"]
+        np.testing.assert_array_equal(fresh.sample(self.world, method="clough-tocher")["B"], first)
+        fresh.sample(self.world, method="gouraud")  # another method's set-up replaces it
+        np.testing.assert_array_equal(fresh.sample(self.world, method="clough-tocher")["B"], first)
+        fresh.clear_cache()
+        np.testing.assert_array_equal(fresh.sample(self.world, method="clough-tocher")["B"], first)
+
     def test_one_point_and_float32_are_taken(self):
         one = self.solution.sample(self.world[0])
         self.assertEqual(one["B"].shape, (1, 3))
