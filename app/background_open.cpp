@@ -34,7 +34,7 @@ void BackgroundOpen::launch(const std::string& path) {
     result.path = path;
     try {
       result.viewed = openForViewing(path, elementSize, import, kDirectLight);
-      result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false);
+      result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false, true);
     } catch (const std::exception& e) {
       result.error = e.what();
     }

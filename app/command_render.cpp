@@ -82,8 +82,9 @@ int parseTessellation(const std::string& text) {
   return int(*level);
 }
 
-void drawHeadless(gl::MeshRenderer& renderer, const ViewedFile& viewed, const DisplayOptions& display, int width,
-                  int height) {
+void drawHeadless(gl::MeshRenderer& renderer, const std::shared_ptr<const ViewedFile>& shared,
+                  const DisplayOptions& display, int width, int height) {
+  const ViewedFile& viewed = *shared;
   const gl::RenderSettings settings = settingsFrom(display);
   if (settings.view == gl::DisplayView::StandardError && !viewed.mesh.hasStandardErrors)
     throw Error(viewed.file.path, viewed.file.isSolution
@@ -101,17 +102,18 @@ void drawHeadless(gl::MeshRenderer& renderer, const ViewedFile& viewed, const Di
                                          std::to_string(reference.pixels.width) + "x" +
                                          std::to_string(reference.pixels.height));
   }
-  renderer.setMesh(viewed.mesh);
+  renderer.setMesh(std::shared_ptr<const RadiosityMesh>(shared, &viewed.mesh));
   if (!display.reference.empty()) renderer.setReferenceImage(reference);
   renderer.render(camera, settings, width, height);
 }
 
-void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
-                    const std::string& out, const std::string& linearOut) {
+void renderHeadless(const std::shared_ptr<const ViewedFile>& shared, const DisplayOptions& display, int width,
+                    int height, const std::string& out, const std::string& linearOut) {
+  const ViewedFile& viewed = *shared;
   const gl::RenderSettings settings = settingsFrom(display);
   gl::EglContext context;
   gl::MeshRenderer renderer;
-  drawHeadless(renderer, viewed, display, width, height);
+  drawHeadless(renderer, shared, display, width, height);
   writePng(renderer.readDisplay(), out);
   if (!linearOut.empty()) writeLinearImage(renderer.readLinear(), linearOut);
   std::printf("%s\n", out.c_str());
@@ -162,14 +164,15 @@ int runRender(const RenderOptions& options) {
   };
   // A ray tracer that needs no solution (the path tracer) takes the surfaces alone: no solve.
   const bool solve = !tracer || rayTracerInfo(*tracer).needsSolution;
-  const ViewedFile viewed =
+  const auto shared = std::make_shared<const ViewedFile>(
       openForViewing(options.file, options.display.elementSize, options.import, solve ? options.light : kDirectLight,
-                     checkOptions, solveProgressOnTerminal(options.light));
+                     checkOptions, solveProgressOnTerminal(options.light)));
+  const ViewedFile& viewed = *shared;
   for (const std::string& w : viewed.file.warnings) std::fprintf(stderr, "radview: warning: %s\n", w.c_str());
   if (tracer)
     renderRayTraced(viewed, options.display, options.gather, width, height, options.out, options.linearOut);
   else
-    renderHeadless(viewed, options.display, width, height, options.out, options.linearOut);
+    renderHeadless(shared, options.display, width, height, options.out, options.linearOut);
   if (!viewed.lighting.empty() && solve) std::printf("scene lighting: %s\n", viewed.lighting.c_str());
   return 0;
 }

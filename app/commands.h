@@ -98,6 +98,7 @@ struct ViewerOptions {
   std::string file;  // empty: the bundled solved Cornell box (app/examples.h)
   int frames = 0;    // > 0: run that many frames, then exit
   std::string screenshot;
+  std::string frameLog;  // a line per frame (app/frame_log.h)
   std::string size = "1280x800";
   ImportOptions import;
   SceneLightOptions light;  // a scene is solved in the background at once, unless directOnly
@@ -132,14 +133,15 @@ gl::RenderSettings settingsFrom(const DisplayOptions& display);
 int parseTessellation(const std::string& text);
 // Renders through EGL to a PNG at `out` and prints its path.
 // A difference view's statistics are printed after the path.
-void renderHeadless(const ViewedFile& viewed, const DisplayOptions& display, int width, int height,
+void renderHeadless(const std::shared_ptr<const ViewedFile>& viewed, const DisplayOptions& display, int width, int height,
                     const std::string& out, const std::string& linearOut = "");
 
 // Draws the viewed file as `display` asks, through the GL renderer of the current context (an
 // EglContext headless), at width x height; the renderer then holds the frame to read back.
-// Throws Error for a display option or a reference image that does not fit.
-void drawHeadless(gl::MeshRenderer& renderer, const ViewedFile& viewed, const DisplayOptions& display, int width,
-                  int height);
+// The renderer shares the viewed file's mesh, not a copy. Throws Error for a display option or a
+// reference image that does not fit.
+void drawHeadless(gl::MeshRenderer& renderer, const std::shared_ptr<const ViewedFile>& viewed,
+                  const DisplayOptions& display, int width, int height);
 
 // Throws Error for a gather option out of its range (--spp, --emitter-samples).
 void checkGatherOptions(const GatherOptions& gather);

@@ -48,6 +48,9 @@ int main(int argc, char** argv) {
   app.add_option("--frames", viewer.frames, "Run the window for N frames, then exit")->check(CLI::Range(1, 1000000000));
   app.add_option("--screenshot", viewer.screenshot, "With --frames: write a PNG of the window (panel included)");
   app.add_option("--size", viewer.size, "Window size WIDTHxHEIGHT")->capture_default_str();
+  app.add_option("--frame-log", viewer.frameLog,
+                 "Write a line per frame to FILE: when it was shown (seconds since the epoch), its CPU time, the "
+                 "method asked for and the one drawn, and the mesh's version (one more per edit or undo)");
   // Both the window and render draw with the interpolation methods and the ray tracers.
   const std::vector<std::string> methods = pictureMethodNames();
   addDisplayOptions(app, viewer.display, methods);

@@ -2,6 +2,7 @@
 #include "app/background_pieces.h"
 #include "app/commands.h"
 #include "app/examples.h"
+#include "app/frame_log.h"
 #include "app/solve_progress_bar.h"
 #include "app/viewer_gather.h"
 #include "app/viewer_input.h"
@@ -30,6 +31,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace radview {
@@ -71,7 +73,7 @@ std::string nextScreenshotName() {
 }
 
 // Where no display exists, the viewer's job becomes a headless render of the same file.
-int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
+int renderInstead(const ViewerOptions& options, ViewedFile viewed) {
   const std::string out =
       std::filesystem::absolute("radview-" + std::filesystem::path(viewed.file.path).stem().string() + ".png");
   std::fprintf(stderr, "radview: no display (%s); rendering headless instead\n", glfwFailure.c_str());
@@ -81,15 +83,15 @@ int renderInstead(const ViewerOptions& options, const ViewedFile& viewed) {
   const std::optional<RayTracer> tracer = rayTracerFromName(options.display.method);
   const bool needsSolution = !tracer || rayTracerInfo(*tracer).needsSolution;
   const bool solve = !viewed.file.isSolution && !options.light.directOnly && needsSolution;
-  const ViewedFile lit = solve ? openForViewing(options.file, options.display.elementSize, options.import,
-                                                options.light, nullptr, solveProgressOnTerminal(options.light))
-                               : ViewedFile{};
-  const ViewedFile& shown = solve ? lit : viewed;
+  const auto shown = std::make_shared<const ViewedFile>(
+      solve ? openForViewing(options.file, options.display.elementSize, options.import, options.light, nullptr,
+                             solveProgressOnTerminal(options.light))
+            : std::move(viewed));
   if (tracer)
-    renderRayTraced(shown, options.display, options.gather, width, height, out, "");
+    renderRayTraced(*shown, options.display, options.gather, width, height, out, "");
   else
     renderHeadless(shown, options.display, width, height, out);
-  if (!shown.lighting.empty() && needsSolution) std::printf("scene lighting: %s\n", shown.lighting.c_str());
+  if (!shown->lighting.empty() && needsSolution) std::printf("scene lighting: %s\n", shown->lighting.c_str());
   return 0;
 }
 
@@ -118,6 +120,8 @@ struct ViewerWork {
   BackgroundPieces pieces;
   ViewerGather gather;
   uint64_t meshVersion = 0;  // counts the meshes given to the renderer, for the gather
+  std::optional<uint64_t> boundsVersion;  // the mesh version `bounds` is of
+  Bounds bounds;
   SceneLightOptions light;   // a scene opened is solved with these settings, unless directOnly
   ContinuityEditor editor;
   std::unique_ptr<EdgePicker> picker;  // over the shown mesh's elements; made at the first pick
@@ -239,7 +243,6 @@ struct ViewerWork {
       try {
         renderer.setMesh(*solved);
         ++meshVersion;
-        state.viewed.tVertexCount = renderer.tVertexCount();
         state.viewed.mesh = std::move(*solved);
         state.viewed.directLightOnly = false;
         meshReplaced(state);
@@ -270,7 +273,12 @@ struct ViewerWork {
   void drawScene(ViewerState& state, int left, int width, int height, int frame, bool waitForSpp,
                  bool piecesInBackground) {
     try {
-      fitClipPlanes(state.camera, state.viewed.mesh.bounds());
+      // The bounds once per mesh, not per frame: a sweep over every node (100 MB at 10^6 elements).
+      if (boundsVersion != meshVersion) {
+        bounds = state.viewed.mesh.bounds();
+        boundsVersion = meshVersion;
+      }
+      fitClipPlanes(state.camera, bounds);
       const Camera framed = framedFor(state.camera, double(width) / height);
       // The final gather waits for a scene's solve to publish a solution: over direct light alone
       // it would show light the scene does not have.
@@ -288,6 +296,7 @@ struct ViewerWork {
       if (!awaitingSolution) state.gather.progress = shown.progress;
       const gl::RenderSettings drawn =
           piecesInBackground ? pieces.frame(renderer, state.settings, meshVersion, state.status) : state.settings;
+      state.drawnMethod = drawn.method;
       renderer.render(framed, drawn, width, height);
       renderer.presentToDefaultFramebuffer(left, width, height);
     } catch (const std::exception& e) {
@@ -364,6 +373,8 @@ int runViewer(const ViewerOptions& options) {
     throw Error("--screenshot needs --frames N (the number of frames to run before taking it)");
   checkGatherOptions(options.gather);
 
+  std::optional<FrameLog> frameLog;
+  if (!options.frameLog.empty()) frameLog.emplace(options.frameLog);
   ViewedFile viewed = openForViewing(options.file, options.display.elementSize, options.import, kDirectLight);
   // A scene's final gather waits for the solve that starts with the window.
   const bool solveComing = !viewed.file.isSolution && !options.light.directOnly;
@@ -374,7 +385,7 @@ int runViewer(const ViewerOptions& options) {
   glfwSetErrorCallback([](int, const char* message) { glfwFailure = message; });
   if (!glfwInit()) {
     if (options.frames > 0) throw Error("cannot open a window: " + glfwFailure);
-    return renderInstead(options, viewed);
+    return renderInstead(options, std::move(viewed));
   }
   WindowSession session;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
@@ -385,7 +396,7 @@ int runViewer(const ViewerOptions& options) {
   if (!session.window) {
     // A display without OpenGL 4.5 (a remote X server, say): still show the file headless.
     if (options.frames > 0) throw Error("cannot open an OpenGL 4.5 core window: " + glfwFailure);
-    return renderInstead(options, viewed);
+    return renderInstead(options, std::move(viewed));
   }
   GLFWwindow* window = session.window;
   glfwMakeContextCurrent(window);
@@ -453,6 +464,7 @@ int runViewer(const ViewerOptions& options) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    state.tVertexCount = work.renderer.tVertexCount();
     drawPanel(state);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -470,6 +482,7 @@ int runViewer(const ViewerOptions& options) {
     state.screenshotRequested = false;
     glfwSwapBuffers(window);
     state.cpuFrameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (frameLog) frameLog->record(frame, state.cpuFrameMs, state.settings.method, state.drawnMethod, work.meshVersion);
     if (lastFrame) break;
   }
   return status;

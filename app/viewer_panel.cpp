@@ -379,7 +379,7 @@ void drawPanel(ViewerState& state) {
   ImGui::TextColored(ImVec4(kDiscontinuityCm1Colour.r, kDiscontinuityCm1Colour.g, kDiscontinuityCm1Colour.b, 1), "C-1");
   ImGui::SameLine();
   ImGui::TextColored(ImVec4(kDiscontinuityC0Colour.r, kDiscontinuityC0Colour.g, kDiscontinuityC0Colour.b, 1), "C0");
-  const std::string tLabel = "T-vertices (" + std::to_string(state.viewed.tVertexCount) + ") [T]";
+  const std::string tLabel = "T-vertices (" + std::to_string(state.tVertexCount) + ") [T]";
   ImGui::Checkbox(tLabel.c_str(), &state.settings.tVertices);
   ImGui::Checkbox("Repair T-vertices (Baum et al.) [B]", &state.settings.repairTVertices);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Triangulate every element with a T-vertex before drawing (C&W 9.2)");

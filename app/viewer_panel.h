@@ -41,6 +41,8 @@ struct ViewerState {
   double cpuFrameMs = 0.0;
   double gpuFrameMs = 0.0;
   size_t triangles = 0;
+  Method drawnMethod = Method::Gouraud;  // what the last frame drew: settings.method, or Gouraud while its pieces are set up
+  size_t tVertexCount = 0;  // the drawn mesh's (C&W §9.2), as the renderer found them
   gl::TessellationStatistics tessellation;  // of the last quadratic or C1 frame
   std::string referencePath;                // panel's reference image field (difference view)
   bool referenceRequested = false;          // load referencePath as the reference image

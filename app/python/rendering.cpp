@@ -79,7 +79,7 @@ py::array render(const Solution& solution, const py::kwargs& given) {
     } else {
       gl::EglContext context;
       gl::MeshRenderer renderer;
-      drawHeadless(renderer, *solution.viewed, display, width, height);
+      drawHeadless(renderer, solution.viewed, display, width, height);
       if (linear)
         radiosity = renderer.readLinear();
       else

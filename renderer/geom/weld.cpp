@@ -30,9 +30,13 @@ WeldedPoints weldPoints(const std::vector<Vec3>& points, double distance) {
   // Below double rounding of the extent a distance means "identical" anyway; the floor keeps
   // the cell indices within 64 bits.
   distance = std::max(distance, 1e-15 * bounds.diagonal());
-  // Cells twice the distance: the box of half-width `distance` about a point meets at most
-  // 2 x 2 x 2 of them.
-  PointGrid groupStarts(bounds.lo, 2.0 * distance, points.size());
+  // Cells 16 times the distance: the box of half-width `distance` about a point meets one of
+  // them in most cases (2 x 2 x 2 at most), and a cell holds more than one group only where
+  // points lie within a few weld distances of each other. The cells start off the lattice a
+  // regular mesh's nodes lie on, so that those are not on cell faces. Any cells find the same
+  // groups.
+  const double cell = 16.0 * distance;
+  PointGrid groupStarts(bounds.lo - Vec3(0.377 * cell), cell, points.size());
   WeldedPoints out;
   out.id.reserve(points.size());
   const double distance2 = distance * distance;

@@ -26,17 +26,22 @@ MeshRenderer::MeshRenderer() = default;
 
 MeshRenderer::~MeshRenderer() = default;
 
-void MeshRenderer::setMesh(const RadiosityMesh& mesh) {
-  adoptMesh(prepareMesh(std::make_shared<const RadiosityMesh>(mesh), false));
+void MeshRenderer::setMesh(const RadiosityMesh& mesh) { setMesh(std::make_shared<const RadiosityMesh>(mesh)); }
+
+void MeshRenderer::setMesh(std::shared_ptr<const RadiosityMesh> mesh) {
+  adoptMesh(prepareMesh(std::move(mesh), false, false));
 }
 
 void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
-  const DisplayMesh& display = prepared.display;
-  raster_.setMesh(display.triangles, prepared.linearForQuadraticVertices);
   errorRaster_.setMesh({}, 0);
   errorsUploaded_ = false;
-  overlays_.setMesh(display);
-  polygons_.setMesh(prepared.drawn, display.triangles);
+  overlays_.setMesh(prepared.display);
+  polygons_.setMesh(prepared.drawn);
+  if (prepared.triangles)
+    uploadTriangles(*prepared.triangles);
+  else
+    raster_.setMesh({}, 0);
+  trianglesUploaded_ = prepared.triangles.has_value();
   original_ = std::move(prepared.original);
   mesh_ = std::move(prepared.drawn);
   topology_ = std::move(prepared.topology);
@@ -45,6 +50,25 @@ void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
   repairedDrawn_ = prepared.repairedTVertices;
   patchesFor_ = comparisonPatchesFor_ = deferredFor_ = comparisonDeferredFor_ = splitFor_ = std::nullopt;
   netFor_ = std::nullopt;
+}
+
+void MeshRenderer::uploadTriangles(const DrawnTriangles& triangles) {
+  raster_.setMesh(triangles.vertices, triangles.linearForQuadraticVertices);
+  polygons_.setTriangles(triangles.vertices);
+}
+
+bool MeshRenderer::drawsTriangles(Method method) {
+  switch (methodInfo(method).gpu) {
+    case GpuPass::Triangles:
+    case GpuPass::ScanlinePolygons:
+    case GpuPass::BilinearPolygons:
+    case GpuPass::LagrangePieces:  // its linear elements, and the serendipity quads
+      return true;
+    case GpuPass::PowellSabinPieces:
+    case GpuPass::CloughTocherPieces:
+      return false;
+  }
+  return true;
 }
 
 bool MeshRenderer::isDeferred(Method method, const BezierEvaluation& evaluation) {
@@ -265,7 +289,12 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 }
 
 bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
-  if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices));
+  if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices, false));
+  if (!trianglesUploaded_ &&
+      (drawsTriangles(settings.method) || (compareMethod && drawsTriangles(settings.comparisonMethod)))) {
+    uploadTriangles(drawnTriangles(*mesh_, *topology_));
+    trianglesUploaded_ = true;
+  }
   if (methodInfo(settings.method).bezierPieces()) uploadPatches(settings, bezierEvaluation(settings, viewCamera));
   if (settings.view == DisplayView::StandardError && !errorsUploaded_) {
     errorRaster_.setMesh(displayTriangles(*mesh_, *topology_, &Node::standardError), 0);

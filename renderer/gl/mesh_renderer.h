@@ -44,7 +44,8 @@ class MeshRenderer {
   MeshRenderer(const MeshRenderer&) = delete;
   MeshRenderer& operator=(const MeshRenderer&) = delete;
 
-  void setMesh(const RadiosityMesh& mesh);  // prepareMesh, then adoptMesh
+  void setMesh(const RadiosityMesh& mesh);  // prepareMesh of a copy, then adoptMesh
+  void setMesh(std::shared_ptr<const RadiosityMesh> mesh);  // the same, sharing the mesh
   // Uploads a mesh prepared on any thread (gl/prepared_mesh.h): what the renderer draws from now.
   void adoptMesh(PreparedMesh&& prepared);
   void render(const Camera& camera, const RenderSettings& settings, int width, int height);
@@ -127,6 +128,9 @@ class MeshRenderer {
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
   // the method or the Clough-Tocher variant changes): for the deferred pass (the C1 methods per
   // pixel), else for the Bezier pass, releasing the other's.
+  void uploadTriangles(const DrawnTriangles& triangles);
+  // Whether `method` draws the display triangles (the raster and polygon passes' input).
+  static bool drawsTriangles(Method method);
   void uploadPatches(const RenderSettings& settings, const BezierEvaluation& evaluation);
   void uploadSplit(const std::vector<glm::vec3>& split, std::optional<PiecesKey> key);  // of the pieces `key`
   void uploadControlNet(double heightScale);  // for the Bezier pass's pieces at this height
@@ -144,6 +148,7 @@ class MeshRenderer {
   BufferStorage storage_;
   RenderTargets targets_;
   RasterPass raster_{storage_};     // flat and Gouraud, and the triangles the polygon pass draws over
+  bool trianglesUploaded_ = false;  // raster_'s and polygons_' triangles, built when a method first draws them
   // The standard-error view's triangles, carrying the nodes' standard errors: built when that
   // view is first drawn for the mesh, and freed with the mesh.
   RasterPass errorRaster_{storage_};

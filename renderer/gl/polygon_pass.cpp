@@ -20,16 +20,20 @@ PolygonPass::PolygonPass(BufferStorage& storage) : storage_(storage) {
   createDisplayVertexArray(serendipityVao_, serendipityVbo_);
 }
 
-void PolygonPass::setMesh(std::shared_ptr<const RadiosityMesh> mesh, const std::vector<DisplayVertex>& triangles) {
+void PolygonPass::setMesh(std::shared_ptr<const RadiosityMesh> mesh) {
   mesh_ = std::move(mesh);
+  setTriangles({});
+  storage_.clear(corners_);  // uploaded when first drawn
+  storage_.clear(offsets_);
+  uploaded_ = false;
+}
+
+void PolygonPass::setTriangles(const std::vector<DisplayVertex>& triangles) {
   std::vector<DisplayVertex> serendipity;
   for (const DisplayVertex& v : triangles)
     if (isSerendipityQuad(*mesh_, v.element)) serendipity.push_back(v);
   storage_.upload(serendipityVbo_, serendipity.data(), serendipity.size() * sizeof(DisplayVertex));
   serendipityVertices_ = static_cast<GLsizei>(serendipity.size());
-  storage_.clear(corners_);  // uploaded when first drawn
-  storage_.clear(offsets_);
-  uploaded_ = false;
 }
 
 void PolygonPass::uploadPolygons() {

@@ -24,9 +24,10 @@ class PolygonPass {
   // `storage` holds the pass's buffers and outlives it.
   explicit PolygonPass(BufferStorage& storage);
 
-  // A new mesh, as drawn, and its display triangles (the serendipity quads' are kept for
-  // drawSerendipity); its polygons are built when first drawn.
-  void setMesh(std::shared_ptr<const RadiosityMesh> mesh, const std::vector<DisplayVertex>& triangles);
+  // A new mesh, as drawn; its polygons are built when first drawn.
+  void setMesh(std::shared_ptr<const RadiosityMesh> mesh);
+  // The mesh's display triangles: the serendipity quads' are kept for drawSerendipity.
+  void setTriangles(const std::vector<DisplayVertex>& triangles);
 
   // `mode` over the DisplayVertex triangles in `vao`, into the bound framebuffer. Throws Error
   // where the corners outgrow this OpenGL's buffer textures.

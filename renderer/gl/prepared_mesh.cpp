@@ -14,6 +14,9 @@ namespace {
 // linearly come first, and returns how many vertices they take.
 size_t orderLinearForQuadraticFirst(const RadiosityMesh& mesh, std::vector<DisplayVertex>& triangles) {
   auto linear = [&](uint32_t e) { return !isQuadraticTriangle(mesh.elements[e]) && !isSerendipityQuad(mesh, e); };
+  bool allLinear = true;
+  for (size_t v = 0; v < triangles.size() && allLinear; v += 3) allLinear = linear(triangles[v].element);
+  if (allLinear) return triangles.size();  // in order already
   std::vector<DisplayVertex> ordered;
   ordered.reserve(triangles.size());
   size_t linearVertices = 0;
@@ -29,7 +32,14 @@ size_t orderLinearForQuadraticFirst(const RadiosityMesh& mesh, std::vector<Displ
 
 }  // namespace
 
-PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices) {
+DrawnTriangles drawnTriangles(const RadiosityMesh& drawn, const MeshTopology& topology) {
+  DrawnTriangles triangles;
+  triangles.vertices = displayTriangles(drawn, topology);
+  triangles.linearForQuadraticVertices = orderLinearForQuadraticFirst(drawn, triangles.vertices);
+  return triangles;
+}
+
+PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices, bool withTriangles) {
   RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(*original) : *original;
   PreparedMesh prepared;
   // The GPU draws in float32, which resolves only 0.0078 at 1e5 from the origin: a scene there
@@ -40,7 +50,7 @@ PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool rep
   for (Node& node : mesh.nodes) node.position -= prepared.origin;
   prepared.topology = std::make_shared<const MeshTopology>(mesh);
   prepared.display = buildDisplayMesh(mesh, *prepared.topology);
-  prepared.linearForQuadraticVertices = orderLinearForQuadraticFirst(mesh, prepared.display.triangles);
+  if (withTriangles) prepared.triangles = drawnTriangles(mesh, *prepared.topology);
   double brightest = 0.0;
   for (const Element& e : mesh.elements)
     if (!mesh.materials[e.material].isEmitter())

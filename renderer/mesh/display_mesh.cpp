@@ -1,5 +1,6 @@
 #include "mesh/display_mesh.h"
 
+#include "core/parallel_for.h"
 #include "geom/polygon.h"
 
 #include <algorithm>
@@ -94,17 +95,34 @@ std::vector<std::array<DrawnCorner, 3>> watertightTriangles(const RadiosityMesh&
 
 std::vector<DisplayVertex> displayTriangles(const RadiosityMesh& mesh, const MeshTopology& topology,
                                             Rgb Node::*value) {
-  std::vector<DisplayVertex> triangles;
   const std::vector<std::vector<TVertex>> tVertices = tVerticesByElement(mesh, topology);
-  for (size_t e = 0; e < mesh.elements.size(); ++e) {
-    const Element& element = mesh.elements[e];
-    Rgb flat(0.0);  // the mean of the element's nodal values, as RadiosityMesh::meanB
-    for (const auto* list : {&element.corners, &element.midEdge})
-      for (uint32_t node : *list) flat += mesh.nodes[node].*value;
-    flat /= double(element.corners.size() + element.midEdge.size());
-    for (const auto& t : watertightTriangles(mesh, e, tVertices[e], value))
-      for (const DrawnCorner& c : t)
-        triangles.push_back({toFloat(mesh.nodes[c.node].position), toFloat(c.B), toFloat(flat), uint32_t(e)});
+  // Elements in blocks, each block's triangles its own list, the blocks on every core; the
+  // lists then joined in element order, each freed once copied.
+  constexpr size_t kBlock = 4096;
+  std::vector<std::vector<DisplayVertex>> blocks((mesh.elements.size() + kBlock - 1) / kBlock);
+  parallelFor(
+      blocks.size(),
+      [&](size_t block) {
+        std::vector<DisplayVertex>& triangles = blocks[block];
+        for (size_t e = block * kBlock; e < std::min(mesh.elements.size(), (block + 1) * kBlock); ++e) {
+          const Element& element = mesh.elements[e];
+          Rgb flat(0.0);  // the mean of the element's nodal values, as RadiosityMesh::meanB
+          for (const auto* list : {&element.corners, &element.midEdge})
+            for (uint32_t node : *list) flat += mesh.nodes[node].*value;
+          flat /= double(element.corners.size() + element.midEdge.size());
+          for (const auto& t : watertightTriangles(mesh, e, tVertices[e], value))
+            for (const DrawnCorner& c : t)
+              triangles.push_back({toFloat(mesh.nodes[c.node].position), toFloat(c.B), toFloat(flat), uint32_t(e)});
+        }
+      },
+      1);
+  size_t total = 0;
+  for (const auto& block : blocks) total += block.size();
+  std::vector<DisplayVertex> triangles;
+  triangles.reserve(total);
+  for (auto& block : blocks) {
+    triangles.insert(triangles.end(), block.begin(), block.end());
+    block = {};
   }
   return triangles;
 }
@@ -122,7 +140,6 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topo
     drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b});
   };
 
-  out.triangles = displayTriangles(mesh, topology);
   for (const Element& element : mesh.elements) {
     const auto& c = element.corners;
     const size_t n = c.size();

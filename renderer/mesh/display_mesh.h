@@ -33,22 +33,24 @@ inline constexpr glm::vec4 kSplitLineColour{0.1f, 0.9f, 0.9f, 1.0f};      // Bez
 inline constexpr glm::vec4 kTessellationColour{0.2f, 0.35f, 1.0f, 1.0f};  // generated triangles
 inline constexpr glm::vec4 kControlNetColour{1.0f, 0.55f, 0.1f, 1.0f};    // the surface's Bezier control net
 
+// The overlays of a mesh: what is drawn over its surfaces. Its triangles (displayTriangles) are
+// built apart, only for the methods that draw them.
 struct DisplayMesh {
-  std::vector<DisplayVertex> triangles;           // three vertices per triangle
   std::vector<glm::vec3> elementEdges;            // two points per segment, each element edge once
   std::vector<OverlayVertex> discontinuityEdges;  // two per segment, coloured by order; C1 tags not drawn
   std::vector<OverlayVertex> tVertices;           // one marker each (MeshTopology::tVertices)
 };
 
+// The overlays; `topology` is the mesh's own (MeshTopology(mesh)).
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
+
+// The triangles the GPU draws of the elements, three vertices each, carrying the nodal values
+// `value` (B, or the standard-error view's &Node::standardError).
 // Elements are drawn as watertightTriangles. Linear elements are triangulated over their corners (triangulatePolygon: a
 // fan when strictly convex, else a constrained Delaunay triangulation, so a T-vertex listed as a corner gets no
 // zero-area triangle). Quadratic triangles are cut at their mid-edge nodes into four triangles, so Gouraud shading
 // passes through all six nodal values; other quadratic polygons are cut over their corners only (their mid-edge values
-// are shown by the higher-order methods). `topology` is the mesh's own (MeshTopology(mesh)).
-DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
-
-// buildDisplayMesh's triangles carrying another nodal value in place of B (the standard-error
-// view's: &Node::standardError), interpolated the same way.
+// are shown by the higher-order methods). Built on every core.
 std::vector<DisplayVertex> displayTriangles(const RadiosityMesh& mesh, const MeshTopology& topology,
                                             Rgb Node::*value = &Node::B);
 

@@ -86,6 +86,7 @@ MeshTopology::MeshTopology(const RadiosityMesh& mesh, double weldTolerance) {
   aOfUse = {};
   elementEdges_.resize(uses.size());
   sides_.reserve(uses.size());
+  edges_.reserve(uses.size() / 2 + 1);  // each interior edge has two uses
   std::vector<uint32_t> run;
   for (uint32_t a = 0; a < positionCount_; ++a) {
     run.assign(usesByA.items.begin() + usesByA.start[a], usesByA.items.begin() + usesByA.start[a + 1]);
@@ -154,7 +155,10 @@ void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Ve
   if (!(lengthSum > 0.0)) return;
   const double diagonal = mesh.bounds().diagonal();
   const double cellSize = std::max(lengthSum / double(edges_.size()), 1e-6 * diagonal);
-  PointGrid grid(mesh.bounds().lo, cellSize, positions.size());
+  // Cells start off the mesh's lattice: a mesh of axis-aligned elements about a cell across
+  // then has its nodes inside cells, not on their faces, so that an edge's box meets 2 cells
+  // rather than 12. Any origin finds the same points.
+  PointGrid grid(mesh.bounds().lo - Vec3(0.377 * cellSize), cellSize, positions.size());
   for (uint32_t p = 0; p < positions.size(); ++p) grid.insert(p, positions[p]);
 
   // Edges in blocks, each block's T-vertices its own list: the blocks run on every core.
@@ -203,6 +207,31 @@ void MeshTopology::findTVertices(const RadiosityMesh& mesh, const std::vector<Ve
   std::sort(tVertices_.begin(), tVertices_.end(), [](const TVertex& x, const TVertex& y) {
     return std::tie(x.element, x.edge, x.t, x.node) < std::tie(y.element, y.edge, y.t, y.node);
   });
+}
+
+void checkDiscontinuityEdges(const RadiosityMesh& mesh) {
+  if (mesh.discontinuities.empty()) return;
+  auto key = [](uint32_t a, uint32_t b) { return uint64_t(std::min(a, b)) << 32 | std::max(a, b); };
+  std::vector<bool> tagged(mesh.nodes.size(), false);
+  for (const DiscontinuityEdge& tag : mesh.discontinuities) {
+    if (tag.a >= mesh.nodes.size() || tag.b >= mesh.nodes.size()) {
+      const MeshTopology named(mesh);  // throws, naming the tag
+      return;
+    }
+    tagged[tag.a] = tagged[tag.b] = true;
+  }
+  std::vector<uint64_t> edges;  // the element edges between tagged nodes
+  for (const Element& element : mesh.elements)
+    for (size_t i = 0; i < element.corners.size(); ++i) {
+      const uint32_t a = element.corners[i], b = element.corners[(i + 1) % element.corners.size()];
+      if (a < tagged.size() && b < tagged.size() && tagged[a] && tagged[b]) edges.push_back(key(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (const DiscontinuityEdge& tag : mesh.discontinuities)
+    if (!std::binary_search(edges.begin(), edges.end(), key(tag.a, tag.b))) {
+      const MeshTopology byPosition(mesh);  // across duplicated nodes; throws for an edge that is none
+      return;
+    }
 }
 
 int64_t MeshTopology::neighbour(uint32_t element, uint32_t edge) const {

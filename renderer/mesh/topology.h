@@ -40,6 +40,12 @@ struct TVertex {
   double t = 0.0;  // position along the edge, in (0, 1)
 };
 
+// Throws Error, as MeshTopology does, for a discontinuity edge that is not an element edge:
+// what a reader checks of the tags without the whole topology. Cheap where every tag names
+// two consecutive corners of an element (as radview writes them); a tag that does not is
+// looked up by position through MeshTopology.
+void checkDiscontinuityEdges(const RadiosityMesh& mesh);
+
 class MeshTopology {
  public:
   // Nodes closer than weldTolerance * (bounding-box diagonal) share a position id; edges are

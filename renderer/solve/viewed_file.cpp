@@ -57,7 +57,7 @@ ViewedFile openForViewing(const std::string& path, double elementSize, const Imp
       viewed.mesh =
           solvedScene(viewed.file.scene, elementSize, light.solve, onProgress, viewed.lighting, viewed.elementSize);
     }
-    viewed.tVertexCount = MeshTopology(viewed.mesh).tVertices().size();
+    checkDiscontinuityEdges(viewed.mesh);
   } catch (const Error& e) {
     const std::string what = e.what();
     throw what.rfind(path + ": ", 0) == 0 ? e : Error(path, what);

@@ -33,7 +33,6 @@ struct ViewedFile {
   LoadedFile file;           // its mesh moved into `mesh`
   RadiosityMesh mesh;        // what is drawn
   double elementSize = 0.0;  // for scenes: the uniform mesh's element size, or the solve's patches'; 0 for solutions
-  size_t tVertexCount = 0;
   std::string lighting;          // for scenes: how they were lit, in words (a solve's summary, or kDirectOnlyLabel)
   bool directLightOnly = false;  // a scene lit by --direct-only: it has no solution to gather from
 };

@@ -70,6 +70,7 @@ Vec3 cornerMean(const RadiosityMesh& mesh, size_t element) {
 void exerciseMesh(const RadiosityMesh& mesh) {
   const MeshTopology topology(mesh);
   const DisplayMesh display = buildDisplayMesh(mesh, topology);
+  const std::vector<DisplayVertex> triangles = displayTriangles(mesh, topology);
   const RadiosityMesh repaired = repairTVertices(mesh);
   // The view-dependent methods seen from the front preset, 64x64 pixels.
   InterpolantOptions options;

@@ -156,6 +156,30 @@ TEST(TopologyTest, DiscontinuityThatIsNoElementEdgeThrows) {
   }
 }
 
+// checkDiscontinuityEdges agrees with MeshTopology: a tag on an element's own corners, or on
+// nodes of two elements that share the edge only by position (a C-1 edge's duplicated nodes),
+// passes; the diagonal throws the same message.
+TEST(TopologyTest, CheckingTheTagsAloneAgreesWithTheTopology) {
+  MeshBuilder b;
+  b.column(0, 1, {0, 1});
+  b.mesh.discontinuities.push_back({3, 1, Continuity::C0});  // the quad's edge x = 1
+  EXPECT_NO_THROW(checkDiscontinuityEdges(b.mesh));
+  // A second quad right of it with its own nodes on that edge, tagged across: node 1 of the
+  // first and the copy of node 3 in the second.
+  const uint32_t copy1 = b.node(b.mesh.nodes[1].position), copy3 = b.node(b.mesh.nodes[3].position);
+  b.element({copy1, b.node({2, 0, 0}), b.node({2, 1, 0}), copy3});
+  b.mesh.discontinuities.push_back({1, copy3, Continuity::Cm1});
+  EXPECT_NO_THROW(MeshTopology{b.mesh});
+  EXPECT_NO_THROW(checkDiscontinuityEdges(b.mesh));
+  b.mesh.discontinuities.push_back({0, 3, Continuity::C0});  // the first quad's diagonal
+  try {
+    checkDiscontinuityEdges(b.mesh);
+    FAIL() << "no Error";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "discontinuity edge 2 (nodes 0-3) is not an element edge");
+  }
+}
+
 TEST(TopologyTest, WeldsWithinTheToleranceOnly) {
   MeshBuilder b;
   b.column(0, 1, {0, 1});
