@@ -34,7 +34,9 @@ void BackgroundOpen::launch(const std::string& path) {
     result.path = path;
     try {
       result.viewed = openForViewing(path, elementSize, import, kDirectLight);
-      result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), false, true);
+      gl::PrepareOptions options;
+      options.triangles = true;  // off the frame loop, as the rest
+      result.prepared = gl::prepareMesh(std::make_shared<const RadiosityMesh>(result.viewed->mesh), options);
     } catch (const std::exception& e) {
       result.error = e.what();
     }

@@ -139,14 +139,14 @@ struct ViewerWork {
 
   // The edited mesh to the renderer; the pieces and the gather see a new version.
   void showEdited(ViewerState& state) {
-    renderer.setMesh(state.viewed.mesh);
+    renderer.setEditedMesh(state.viewed.mesh, editor.topology(state.viewed.mesh));
     ++meshVersion;
     state.undoSteps = editor.steps();
     if (state.pickedEdge) state.pickedDescription = describePicked(state.viewed.mesh, *state.pickedEdge);
   }
 
-  static std::string describePicked(const RadiosityMesh& mesh, EdgeRef ref) {
-    const EdgeDescription d = describeEdge(mesh, MeshTopology(mesh), ref);
+  std::string describePicked(const RadiosityMesh& mesh, EdgeRef ref) {
+    const EdgeDescription d = describeEdge(mesh, *editor.topology(mesh), ref);
     std::ostringstream text;
     text.precision(4);
     text << "edge " << ref.edge << " of element " << ref.element << ": " << toString(d.continuity) << ", "

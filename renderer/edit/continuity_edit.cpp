@@ -150,7 +150,13 @@ EdgeDescription describeEdge(const RadiosityMesh& mesh, const MeshTopology& topo
 
 void setEdgeContinuity(RadiosityMesh& mesh, EdgeRef ref, Continuity order) {
   checkRef(mesh, ref);
-  const MeshTopology topology(mesh);
+  MeshTopology topology(mesh);
+  setEdgeContinuity(mesh, topology, ref, order);
+}
+
+void setEdgeContinuity(RadiosityMesh& mesh, MeshTopology& topology, EdgeRef ref, Continuity order) {
+  checkRef(mesh, ref);
+  const size_t nodesBefore = mesh.nodes.size();
   const uint32_t edited = topology.edgeIndex(ref.element, ref.edge);
   const EdgeDescription was = describeEdge(mesh, topology, ref);
 
@@ -216,23 +222,42 @@ void setEdgeContinuity(RadiosityMesh& mesh, EdgeRef ref, Continuity order) {
     const Element& e = mesh.elements[side.element];
     mesh.discontinuities.push_back({e.corners[side.edge], cornerAfter(e, side.edge), o});
   }
+  // Splits only add nodes and joins only remove them: the same count, the same nodes. Every
+  // other tag is as it was, one tag per edited edge, so the edge's continuity is `order`.
+  if (mesh.nodes.size() == nodesBefore)
+    topology.setContinuity(edited, order);
+  else
+    topology = MeshTopology(mesh);
+}
+
+std::shared_ptr<const MeshTopology> ContinuityEditor::topology(const RadiosityMesh& mesh) {
+  if (!topology_) topology_ = std::make_shared<MeshTopology>(mesh);
+  return topology_;
+}
+
+MeshTopology& ContinuityEditor::topologyToEdit(const RadiosityMesh& mesh) {
+  if (!topology_)
+    topology_ = std::make_shared<MeshTopology>(mesh);
+  else if (topology_.use_count() > 1)  // only this thread hands it out: no new reader can appear meanwhile
+    topology_ = std::make_shared<MeshTopology>(*topology_);
+  return *topology_;
 }
 
 std::optional<std::string> ContinuityEditor::cycle(RadiosityMesh& mesh, const std::vector<EdgeRef>& edges) {
   std::optional<std::string> refused;
   std::vector<Retag> change;
-  // An edge picked from both of its sides is one edge. Edits keep positions, so the first
-  // topology's edge indices name the same edges throughout.
-  const MeshTopology first(mesh);
+  // An edge picked from both of its sides is one edge. Edits keep positions, so edge indices
+  // name the same edges throughout.
+  MeshTopology& topology = topologyToEdit(mesh);
   std::vector<uint32_t> done;
   for (const EdgeRef& ref : edges) {
     checkRef(mesh, ref);
-    const uint32_t index = first.edgeIndex(ref.element, ref.edge);
+    const uint32_t index = topology.edgeIndex(ref.element, ref.edge);
     if (std::find(done.begin(), done.end(), index) != done.end()) continue;
     done.push_back(index);
-    const Continuity now = describeEdge(mesh, MeshTopology(mesh), ref).continuity;
+    const Continuity now = describeEdge(mesh, topology, ref).continuity;
     try {
-      setEdgeContinuity(mesh, ref, nextContinuity(now));
+      setEdgeContinuity(mesh, topology, ref, nextContinuity(now));
       change.push_back({ref, now});
     } catch (const Error& e) {
       if (!refused) refused = e.what();
@@ -246,7 +271,8 @@ bool ContinuityEditor::undo(RadiosityMesh& mesh) {
   if (history_.empty()) return false;
   const std::vector<Retag> change = std::move(history_.back());
   history_.pop_back();
-  for (auto it = change.rbegin(); it != change.rend(); ++it) setEdgeContinuity(mesh, it->edge, it->before);
+  MeshTopology& topology = topologyToEdit(mesh);
+  for (auto it = change.rbegin(); it != change.rend(); ++it) setEdgeContinuity(mesh, topology, it->edge, it->before);
   return true;
 }
 

@@ -6,14 +6,15 @@
 // same way), and taking the tag away merges them back. Elements keep their indices, so an
 // EdgeRef names the same edge before and after any edit.
 #include "mesh/radiosity_mesh.h"
+#include "mesh/topology.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace radview {
-
-class MeshTopology;
 
 // Edge `edge` of element `element`: corners[edge] -> corners[edge + 1].
 struct EdgeRef {
@@ -41,9 +42,16 @@ Continuity nextContinuity(Continuity c);
 // range, or when the edge stops being C-1 but its sides carry different radiosities at a node
 // (joining them would change the solution: the tag stays).
 void setEdgeContinuity(RadiosityMesh& mesh, EdgeRef ref, Continuity order);
+// The same on the mesh's topology (MeshTopology(mesh)), which stays the mesh's: updated in place
+// where only the tag changed (edits keep positions, so edges keep their indices), built again
+// where nodes were split or joined. A whole topology takes a second or more at 10^6 elements.
+void setEdgeContinuity(RadiosityMesh& mesh, MeshTopology& topology, EdgeRef ref, Continuity order);
 
 // Retagging with undo. Each change is one step (a drag across several edges is one change);
-// undo sets every edge of the last change back to the continuity it had.
+// undo sets every edge of the last change back to the continuity it had. The editor keeps the
+// edited mesh's topology from one edit to the next, and shares it (a renderer draws with it): the
+// mesh must change only through the editor until clear(). A topology still shared when the next
+// edit comes is copied first, not changed under its readers.
 class ContinuityEditor {
  public:
   // Advances each edge's continuity one step (nextContinuity). Edges that cannot change (see
@@ -52,14 +60,23 @@ class ContinuityEditor {
   // Undoes the last change; false when there is none.
   bool undo(RadiosityMesh& mesh);
   size_t steps() const { return history_.size(); }
-  void clear() { history_.clear(); }
+  // Forgets the history and the topology: for a mesh changed otherwise, or another mesh.
+  void clear() {
+    history_.clear();
+    topology_.reset();
+  }
+  // The edited mesh's topology (MeshTopology(mesh)), built at the first call after clear().
+  std::shared_ptr<const MeshTopology> topology(const RadiosityMesh& mesh);
 
  private:
   struct Retag {
     EdgeRef edge;
     Continuity before;
   };
+  // The topology to change: the editor's own, copied first if it is shared.
+  MeshTopology& topologyToEdit(const RadiosityMesh& mesh);
   std::vector<std::vector<Retag>> history_;
+  std::shared_ptr<MeshTopology> topology_;
 };
 
 }  // namespace radview

@@ -28,20 +28,32 @@ MeshRenderer::~MeshRenderer() = default;
 
 void MeshRenderer::setMesh(const RadiosityMesh& mesh) { setMesh(std::make_shared<const RadiosityMesh>(mesh)); }
 
-void MeshRenderer::setMesh(std::shared_ptr<const RadiosityMesh> mesh) {
-  adoptMesh(prepareMesh(std::move(mesh), false, false));
+void MeshRenderer::setMesh(std::shared_ptr<const RadiosityMesh> mesh) { adoptMesh(prepareMesh(std::move(mesh), {})); }
+
+void MeshRenderer::setEditedMesh(const RadiosityMesh& mesh, std::shared_ptr<const MeshTopology> topology) {
+  // Drawn repaired, the elements are not the edited mesh's: all is built again.
+  if (repairedDrawn_) return setMesh(mesh);
+  PrepareOptions options;
+  options.elementEdges = false;
+  options.topology = std::move(topology);
+  adoptMesh(prepareMesh(std::make_shared<const RadiosityMesh>(mesh), options), true);
 }
 
-void MeshRenderer::adoptMesh(PreparedMesh&& prepared) {
+void MeshRenderer::adoptMesh(PreparedMesh&& prepared) { adoptMesh(std::move(prepared), false); }
+
+void MeshRenderer::adoptMesh(PreparedMesh&& prepared, bool sameSurfaces) {
   errorRaster_.setMesh({}, 0);
   errorsUploaded_ = false;
-  overlays_.setMesh(prepared.display);
+  overlays_.setMesh(prepared.display, !prepared.elementEdges && sameSurfaces);
   polygons_.setMesh(prepared.drawn);
-  if (prepared.triangles)
+  if (prepared.triangles) {
     uploadTriangles(*prepared.triangles);
-  else
+    trianglesUploaded_ = true;
+  } else if (!sameSurfaces) {
     raster_.setMesh({}, 0);
-  trianglesUploaded_ = prepared.triangles.has_value();
+    polygons_.setTriangles({});
+    trianglesUploaded_ = false;
+  }
   original_ = std::move(prepared.original);
   mesh_ = std::move(prepared.drawn);
   topology_ = std::move(prepared.topology);
@@ -289,7 +301,11 @@ void MeshRenderer::render(const Camera& viewCamera, const RenderSettings& reques
 }
 
 bool MeshRenderer::uploadForFrame(const RenderSettings& settings, const Camera& viewCamera, bool compareMethod) {
-  if (settings.repairTVertices != repairedDrawn_) adoptMesh(prepareMesh(original_, settings.repairTVertices, false));
+  if (settings.repairTVertices != repairedDrawn_) {
+    PrepareOptions options;
+    options.repairTVertices = settings.repairTVertices;
+    adoptMesh(prepareMesh(original_, options));
+  }
   if (!trianglesUploaded_ &&
       (drawsTriangles(settings.method) || (compareMethod && drawsTriangles(settings.comparisonMethod)))) {
     uploadTriangles(drawnTriangles(*mesh_, *topology_));

@@ -46,6 +46,11 @@ class MeshRenderer {
 
   void setMesh(const RadiosityMesh& mesh);  // prepareMesh of a copy, then adoptMesh
   void setMesh(std::shared_ptr<const RadiosityMesh> mesh);  // the same, sharing the mesh
+  // The drawn mesh after a continuity edit (edit/continuity_edit.h), with its topology
+  // (MeshTopology(mesh), which the editor keeps). An edit keeps every position, value and
+  // element, so the display triangles, which carry no node ids, stay as they are; the overlays
+  // and every method's pieces are built again.
+  void setEditedMesh(const RadiosityMesh& mesh, std::shared_ptr<const MeshTopology> topology);
   // Uploads a mesh prepared on any thread (gl/prepared_mesh.h): what the renderer draws from now.
   void adoptMesh(PreparedMesh&& prepared);
   void render(const Camera& camera, const RenderSettings& settings, int width, int height);
@@ -128,6 +133,9 @@ class MeshRenderer {
   // The Bezier pieces of the quadratic and C1 methods, built when first drawn (and again when
   // the method or the Clough-Tocher variant changes): for the deferred pass (the C1 methods per
   // pixel), else for the Bezier pass, releasing the other's.
+  // With `sameSurfaces` (a continuity edit of the mesh drawn): the display triangles, and the
+  // element edges where `prepared` has none, stay.
+  void adoptMesh(PreparedMesh&& prepared, bool sameSurfaces);
   void uploadTriangles(const DrawnTriangles& triangles);
   // Whether `method` draws the display triangles (the raster and polygon passes' input).
   static bool drawsTriangles(Method method);

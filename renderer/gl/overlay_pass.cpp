@@ -24,9 +24,11 @@ OverlayPass::OverlayPass(BufferStorage& storage) : storage_(storage) {
   floatAttribute(markerVao_, 1, 4, offsetof(OverlayVertex, colour));
 }
 
-void OverlayPass::setMesh(const DisplayMesh& display) {
-  storage_.upload(edgeVbo_, display.elementEdges.data(), display.elementEdges.size() * sizeof(glm::vec3));
-  edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+void OverlayPass::setMesh(const DisplayMesh& display, bool keepElementEdges) {
+  if (!keepElementEdges) {
+    storage_.upload(edgeVbo_, display.elementEdges.data(), display.elementEdges.size() * sizeof(glm::vec3));
+    edgeVertices_ = static_cast<GLsizei>(display.elementEdges.size());
+  }
   std::vector<OverlayVertex> markers = display.discontinuityEdges;
   markers.insert(markers.end(), display.tVertices.begin(), display.tVertices.end());
   glNamedBufferData(markerVbo_, markers.size() * sizeof(OverlayVertex), markers.data(), GL_STATIC_DRAW);

@@ -30,7 +30,8 @@ class OverlayPass {
   // `storage` holds the element edges' buffer and outlives the pass.
   explicit OverlayPass(BufferStorage& storage);
 
-  void setMesh(const DisplayMesh& display);
+  // A mesh's overlays; with `keepElementEdges`, the element edges stay those of the last mesh.
+  void setMesh(const DisplayMesh& display, bool keepElementEdges = false);
   void setSplitLines(const std::vector<glm::vec3>& lines);  // two points per segment
   void setControlNet(const std::vector<glm::vec3>& lines);
 

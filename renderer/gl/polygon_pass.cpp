@@ -22,7 +22,6 @@ PolygonPass::PolygonPass(BufferStorage& storage) : storage_(storage) {
 
 void PolygonPass::setMesh(std::shared_ptr<const RadiosityMesh> mesh) {
   mesh_ = std::move(mesh);
-  setTriangles({});
   storage_.clear(corners_);  // uploaded when first drawn
   storage_.clear(offsets_);
   uploaded_ = false;

@@ -24,7 +24,8 @@ class PolygonPass {
   // `storage` holds the pass's buffers and outlives it.
   explicit PolygonPass(BufferStorage& storage);
 
-  // A new mesh, as drawn; its polygons are built when first drawn.
+  // A new mesh, as drawn; its polygons are built when first drawn. The serendipity quads'
+  // triangles stay until setTriangles.
   void setMesh(std::shared_ptr<const RadiosityMesh> mesh);
   // The mesh's display triangles: the serendipity quads' are kept for drawSerendipity.
   void setTriangles(const std::vector<DisplayVertex>& triangles);

@@ -39,18 +39,23 @@ DrawnTriangles drawnTriangles(const RadiosityMesh& drawn, const MeshTopology& to
   return triangles;
 }
 
-PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices, bool withTriangles) {
+PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, const PrepareOptions& options) {
+  const bool repairTVertices = options.repairTVertices;
   RadiosityMesh mesh = repairTVertices ? radview::repairTVertices(*original) : *original;
   PreparedMesh prepared;
+  // Of the mesh as given (or repaired), before it moves: the topology the CPU's interpolants and
+  // the continuity editor build, which the editor can then hand over.
+  prepared.topology = options.topology && !repairTVertices ? options.topology
+                                                           : std::make_shared<const MeshTopology>(mesh);
   // The GPU draws in float32, which resolves only 0.0078 at 1e5 from the origin: a scene there
   // 1e-3 across collapsed to a few points (tests/gl/extremes_render_test.cpp). Its coordinates
   // are taken relative to the mesh's centre, in double, before anything becomes float, and
   // MeshRenderer::render moves the camera's matrix by the same (camera-relative rendering).
   prepared.origin = mesh.bounds().center();
   for (Node& node : mesh.nodes) node.position -= prepared.origin;
-  prepared.topology = std::make_shared<const MeshTopology>(mesh);
-  prepared.display = buildDisplayMesh(mesh, *prepared.topology);
-  if (withTriangles) prepared.triangles = drawnTriangles(mesh, *prepared.topology);
+  prepared.display = buildDisplayMesh(mesh, *prepared.topology, options.elementEdges);
+  prepared.elementEdges = options.elementEdges;
+  if (options.triangles) prepared.triangles = drawnTriangles(mesh, *prepared.topology);
   double brightest = 0.0;
   for (const Element& e : mesh.elements)
     if (!mesh.materials[e.material].isEmitter())

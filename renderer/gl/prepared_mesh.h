@@ -26,8 +26,9 @@ DrawnTriangles drawnTriangles(const RadiosityMesh& drawn, const MeshTopology& to
 struct PreparedMesh {
   std::shared_ptr<const RadiosityMesh> original;  // as given
   std::shared_ptr<const RadiosityMesh> drawn;     // repaired when asked, moved by -origin
-  std::shared_ptr<const MeshTopology> topology;   // drawn's, shared with every method's pieces
+  std::shared_ptr<const MeshTopology> topology;   // drawn's (of its positions before the move), shared with every method's pieces
   DisplayMesh display;                            // drawn's overlays
+  bool elementEdges = true;                       // display.elementEdges built (PrepareOptions::elementEdges)
   // drawn's triangles, when asked for; else MeshRenderer builds them when a method first draws
   // them (a C1 method per pixel never does: a second or more, and 264 MB, at 10^6 elements).
   std::optional<DrawnTriangles> triangles;
@@ -36,7 +37,16 @@ struct PreparedMesh {
   double brightestLuminance = 1.0;  // of the non-emitting elements' nodes, for the surface view
 };
 
+struct PrepareOptions {
+  bool repairTVertices = false;
+  bool triangles = false;    // the display triangles now, not when a method first draws them
+  bool elementEdges = true;  // false: the caller keeps the lines it has (a continuity edit changes none)
+  // The original's topology (MeshTopology(*original)), where the caller has it: not built again,
+  // unless the T-vertices are repaired.
+  std::shared_ptr<const MeshTopology> topology;
+};
+
 // Throws Error for a mesh that cannot be drawn (a discontinuity edge that is no element edge).
-PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, bool repairTVertices, bool withTriangles);
+PreparedMesh prepareMesh(std::shared_ptr<const RadiosityMesh> original, const PrepareOptions& options);
 
 }  // namespace radview::gl

@@ -127,19 +127,20 @@ std::vector<DisplayVertex> displayTriangles(const RadiosityMesh& mesh, const Mes
   return triangles;
 }
 
-DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology) {
-  DisplayMesh out;
-  // Element edges by their nodes, each drawn once, in the direction its first element runs it
-  // (a line's pixels depend on its direction).
+namespace {
+
+// Element edges by their end positions (MeshTopology's ids), each drawn once, in the direction
+// its first element runs it (a line's pixels depend on its direction).
+std::vector<glm::vec3> elementEdgeLines(const RadiosityMesh& mesh, const MeshTopology& topology) {
   struct DrawnEdge {
-    uint64_t nodes;
+    uint64_t positions;
     uint32_t from, to;
   };
   std::vector<DrawnEdge> drawnEdges;
   auto addEdge = [&](uint32_t a, uint32_t b) {
-    drawnEdges.push_back({uint64_t(std::min(a, b)) << 32 | std::max(a, b), a, b});
+    const uint32_t p = topology.positionId(a), q = topology.positionId(b);
+    drawnEdges.push_back({uint64_t(std::min(p, q)) << 32 | std::max(p, q), a, b});
   };
-
   for (const Element& element : mesh.elements) {
     const auto& c = element.corners;
     const size_t n = c.size();
@@ -153,15 +154,24 @@ DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topo
     }
   }
   std::stable_sort(drawnEdges.begin(), drawnEdges.end(),
-                   [](const DrawnEdge& x, const DrawnEdge& y) { return x.nodes < y.nodes; });
+                   [](const DrawnEdge& x, const DrawnEdge& y) { return x.positions < y.positions; });
   drawnEdges.erase(std::unique(drawnEdges.begin(), drawnEdges.end(),
-                               [](const DrawnEdge& x, const DrawnEdge& y) { return x.nodes == y.nodes; }),
+                               [](const DrawnEdge& x, const DrawnEdge& y) { return x.positions == y.positions; }),
                    drawnEdges.end());
-  out.elementEdges.reserve(2 * drawnEdges.size());
+  std::vector<glm::vec3> lines;
+  lines.reserve(2 * drawnEdges.size());
   for (const DrawnEdge& edge : drawnEdges) {
-    out.elementEdges.push_back(toFloat(mesh.nodes[edge.from].position));
-    out.elementEdges.push_back(toFloat(mesh.nodes[edge.to].position));
+    lines.push_back(toFloat(mesh.nodes[edge.from].position));
+    lines.push_back(toFloat(mesh.nodes[edge.to].position));
   }
+  return lines;
+}
+
+}  // namespace
+
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology, bool elementEdges) {
+  DisplayMesh out;
+  if (elementEdges) out.elementEdges = elementEdgeLines(mesh, topology);
   for (const DiscontinuityEdge& d : mesh.discontinuities) {
     if (d.order == Continuity::C1) continue;
     const glm::vec4 colour = d.order == Continuity::Cm1 ? kDiscontinuityCm1Colour : kDiscontinuityC0Colour;

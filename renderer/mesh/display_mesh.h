@@ -41,8 +41,11 @@ struct DisplayMesh {
   std::vector<OverlayVertex> tVertices;           // one marker each (MeshTopology::tVertices)
 };
 
-// The overlays; `topology` is the mesh's own (MeshTopology(mesh)).
-DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology);
+// The overlays; `topology` is the mesh's own (MeshTopology(mesh)). An element edge is one line
+// however many elements and nodes share its positions (a C-1 edge's two sides too), so that a
+// continuity edit, which only splits and joins nodes, leaves the lines as they are: with
+// `elementEdges` false they are not built.
+DisplayMesh buildDisplayMesh(const RadiosityMesh& mesh, const MeshTopology& topology, bool elementEdges = true);
 
 // The triangles the GPU draws of the elements, three vertices each, carrying the nodal values
 // `value` (B, or the standard-error view's &Node::standardError).

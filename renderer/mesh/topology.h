@@ -68,6 +68,9 @@ class MeshTopology {
   const std::vector<TVertex>& tVertices() const { return tVertices_; }
   // The number of edges whose continuity is `order` (C1 counts the untagged ones).
   size_t countEdges(Continuity order) const;
+  // Edge `edge` retagged, the mesh's nodes unchanged: what the topology of the retagged mesh
+  // would be (edit/continuity_edit.h keeps its topology so).
+  void setContinuity(uint32_t edge, Continuity order) { edges_[edge].continuity = order; }
 
  private:
   void findTVertices(const RadiosityMesh& mesh, const std::vector<Vec3>& positions, double weldDistance);

@@ -96,6 +96,47 @@ TEST(ContinuityEdit, AClickCyclesC1C0Cm1AndBackToC1) {
   EXPECT_EQ(editor.steps(), 3u);
 }
 
+// The topology the editor keeps from edit to edit (updated in place for a retag, built again
+// for a split or a join) is the edited mesh's, field by field, after every click and undo.
+TEST(ContinuityEdit, TheEditorsTopologyIsTheEditedMeshs) {
+  RadiosityMesh mesh = gridMesh();
+  mesh.discontinuities.push_back({3, 4, Continuity::C0});  // a boundary edge tagged before any edit
+  const std::vector<EdgeRef> line = middleLine(mesh);
+  ContinuityEditor editor;
+  auto expectCurrent = [&](const std::string& after) {
+    const std::shared_ptr<const MeshTopology> shared = editor.topology(mesh);  // held: the next edit copies it
+    const MeshTopology& kept = *shared;
+    const MeshTopology fresh(mesh);
+    ASSERT_EQ(kept.positionCount(), fresh.positionCount()) << after;
+    for (uint32_t n = 0; n < mesh.nodes.size(); ++n) ASSERT_EQ(kept.positionId(n), fresh.positionId(n)) << after;
+    ASSERT_EQ(kept.edges().size(), fresh.edges().size()) << after;
+    for (size_t i = 0; i < fresh.edges().size(); ++i) {
+      const MeshEdge &k = kept.edges()[i], &f = fresh.edges()[i];
+      EXPECT_TRUE(k.a == f.a && k.b == f.b && k.firstSide == f.firstSide && k.sideCount == f.sideCount &&
+                  k.continuity == f.continuity)
+          << after << ": edge " << i;
+    }
+    for (uint32_t e = 0; e < mesh.elements.size(); ++e)
+      for (uint32_t k = 0; k < 3; ++k) EXPECT_EQ(kept.edgeIndex(e, k), fresh.edgeIndex(e, k)) << after;
+    EXPECT_EQ(kept.tVertices().size(), fresh.tVertices().size()) << after;
+  };
+  // Clicks on one edge (C0, C-1: a split, C1: a join), a drag along the line (C0), then again
+  // (C-1: splits), each undone in turn.
+  // A reader of the topology (a renderer) keeps what it was given.
+  const std::shared_ptr<const MeshTopology> held = editor.topology(mesh);
+  const size_t heldC0 = held->countEdges(Continuity::C0);
+  for (int click = 0; click < 3; ++click) {
+    editor.cycle(mesh, {line[2]});
+    expectCurrent("click " + std::to_string(click));
+  }
+  EXPECT_EQ(held->countEdges(Continuity::C0), heldC0);
+  editor.cycle(mesh, line);
+  expectCurrent("the line C0");
+  editor.cycle(mesh, line);
+  expectCurrent("the line C-1");
+  while (editor.undo(mesh)) expectCurrent("undo, " + std::to_string(editor.steps()) + " steps left");
+}
+
 TEST(ContinuityEdit, CloughTocherChangesOnlyInTheElementsAtTheRetaggedEdges) {
   RadiosityMesh mesh = gridMesh();
   const std::vector<Rgb> before = cloughTocherValues(mesh);
