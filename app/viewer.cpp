@@ -189,6 +189,7 @@ struct ViewerWork {
         state.status = "no element edge there (click within a few pixels of one)";
         return;
       }
+      editor.startFrom(renderer.givenMeshTopology());  // the renderer's is the shown mesh's
       const std::optional<std::string> refused = editor.cycle(state.viewed.mesh, edges);
       state.pickedEdge = edges.back();
       showEdited(state);

@@ -64,9 +64,15 @@ class ContinuityEditor {
   void clear() {
     history_.clear();
     topology_.reset();
+    shared_.reset();
   }
   // The edited mesh's topology (MeshTopology(mesh)), built at the first call after clear().
   std::shared_ptr<const MeshTopology> topology(const RadiosityMesh& mesh);
+  // Starts from `topology`, the mesh's (MeshTopology(mesh)) that its renderer has, instead of
+  // building one at the first edit; copied when first changed. Ignored once the editor has one.
+  void startFrom(const std::shared_ptr<const MeshTopology>& topology) {
+    if (!topology_ && !shared_) shared_ = topology;
+  }
 
  private:
   struct Retag {
@@ -77,6 +83,7 @@ class ContinuityEditor {
   MeshTopology& topologyToEdit(const RadiosityMesh& mesh);
   std::vector<std::vector<Retag>> history_;
   std::shared_ptr<MeshTopology> topology_;
+  std::shared_ptr<const MeshTopology> shared_;  // startFrom's, until the first edit copies it
 };
 
 }  // namespace radview

@@ -97,6 +97,9 @@ class MeshRenderer {
   // the C1 methods per pixel: the element triangles of the deferred pass, at level 1).
   const TessellationStatistics& tessellationStatistics() const { return statistics_; }
   size_t tVertexCount() const { return overlays_.tVertexCount(); }
+  // The topology of the mesh last given (MeshTopology of it, as its editor keeps one); null while
+  // it is drawn with its T-vertices repaired, when the renderer holds the repaired mesh's.
+  std::shared_ptr<const MeshTopology> givenMeshTopology() const { return repairedDrawn_ ? nullptr : topology_; }
 
  private:
   // A frame's steps, in order (render reads as this list).
@@ -184,7 +187,8 @@ class MeshRenderer {
   std::shared_ptr<const RadiosityMesh> original_;  // as set
   // As drawn: the original, or with its T-vertices repaired, moved by -origin_.
   std::shared_ptr<const RadiosityMesh> mesh_;
-  std::shared_ptr<const MeshTopology> topology_;  // mesh_'s, built once for the display mesh and every method's pieces
+  // mesh_'s (of its positions before the move), built once for the display mesh and every method's pieces
+  std::shared_ptr<const MeshTopology> topology_;
   Vec3 origin_{0.0};                              // the world point at the origin of the coordinates the GPU sees
   double brightestLuminance_ = 1.0;               // of the non-emitting elements' nodes, for the surface view
   bool repairedDrawn_ = false;

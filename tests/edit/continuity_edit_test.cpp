@@ -122,7 +122,8 @@ TEST(ContinuityEdit, TheEditorsTopologyIsTheEditedMeshs) {
   };
   // Clicks on one edge (C0, C-1: a split, C1: a join), a drag along the line (C0), then again
   // (C-1: splits), each undone in turn.
-  // A reader of the topology (a renderer) keeps what it was given.
+  // Started from a renderer's topology, which keeps what it holds.
+  editor.startFrom(std::make_shared<const MeshTopology>(mesh));
   const std::shared_ptr<const MeshTopology> held = editor.topology(mesh);
   const size_t heldC0 = held->countEdges(Continuity::C0);
   for (int click = 0; click < 3; ++click) {
